@@ -1,0 +1,77 @@
+// The CGAL Partition_2 peers: cgal-optimal, cgal-hertel-mehlhorn, cgal-greene, cgal-y-monotone.
+//
+// CGAL 5.5, Partition_2 (Hert and Schirra): optimal_convex_partition_2 (Greene's O(n^4) dynamic
+// program), approx_convex_partition_2 (Hertel-Mehlhorn on a triangulation, <= 4 OPT),
+// greene_approx_convex_partition_2 (Greene's O(n log n) approximation, <= 4 OPT) and
+// y_monotone_partition_2 (plane sweep, O(n log n)). Pre: a simple counter-clockwise polygon.
+//
+// Peers keep their own behaviour: the pieces CGAL returns are reported as returned (only collinear
+// boundary vertices a piece skips are listed again), valid or not; CGAL's own checks are off
+// (CGAL_NDEBUG), as in a user's release build. CGAL 5.5's optimal partition is known to return invalid
+// or non-minimal results on some simple polygons, and to depend on the starting vertex (CGAL issue
+// 4398). The four peers share one file, a deliberate exception to one-algorithm-per-file: Partition_2
+// is heavy to compile, and each translation unit that includes it costs the test build about half a
+// minute.
+#include "algorithms/peer_pieces.h"
+#include "core/registry.h"
+
+#include <CGAL/Partition_traits_2.h>
+#include <CGAL/partition_2.h>
+#include <CGAL/property_map.h>
+
+#include <iterator>
+#include <list>
+#include <numeric>
+#include <vector>
+
+namespace pd {
+namespace {
+
+using IndexTraits = CGAL::Partition_traits_2<Kernel, CGAL::Pointer_property_map<Point>::type>;
+using IndexPolygon = IndexTraits::Polygon_2;
+
+template <class PartitionFn>
+Decomposition run_partition(const Polygon& p, Counters& counters, PartitionFn partition) {
+  std::vector<Point> points = p.vertices();
+  std::vector<std::size_t> ids(points.size());
+  std::iota(ids.begin(), ids.end(), 0);
+  const IndexTraits traits(CGAL::make_property_map(points));
+  std::list<IndexPolygon> result;
+  partition(ids.begin(), ids.end(), std::back_inserter(result), traits);
+  Decomposition d;
+  d.pieces.emplace();
+  for (const IndexPolygon& poly : result) {
+    Piece piece(poly.vertices_begin(), poly.vertices_end());
+    d.pieces->push_back(with_collinear_boundary_vertices(p, piece));
+  }
+  counters["cgal_pieces"] = static_cast<std::int64_t>(result.size());
+  return d;
+}
+
+Decomposition cgal_optimal(const Polygon& p, Counters& c) {
+  return run_partition(p, c, [](auto b, auto e, auto out, const auto& t) { CGAL::optimal_convex_partition_2(b, e, out, t); });
+}
+Decomposition cgal_hertel_mehlhorn(const Polygon& p, Counters& c) {
+  return run_partition(p, c, [](auto b, auto e, auto out, const auto& t) { CGAL::approx_convex_partition_2(b, e, out, t); });
+}
+Decomposition cgal_greene(const Polygon& p, Counters& c) {
+  return run_partition(p, c, [](auto b, auto e, auto out, const auto& t) {
+    CGAL::greene_approx_convex_partition_2(b, e, out, t);
+  });
+}
+Decomposition cgal_y_monotone(const Polygon& p, Counters& c) {
+  return run_partition(p, c, [](auto b, auto e, auto out, const auto& t) { CGAL::y_monotone_partition_2(b, e, out, t); });
+}
+
+}  // namespace
+
+REGISTER_ALGORITHM(Algorithm{"cgal-optimal", Kind::Convex, false, true, "n^4", "== OPT",
+                             "CGAL 5.5 optimal_convex_partition_2 (Greene's dynamic program)", 400, cgal_optimal});
+REGISTER_ALGORITHM(Algorithm{"cgal-hertel-mehlhorn", Kind::Convex, false, false, "n", "<= 4*OPT",
+                             "CGAL 5.5 approx_convex_partition_2 (Hertel-Mehlhorn)", 1000000, cgal_hertel_mehlhorn});
+REGISTER_ALGORITHM(Algorithm{"cgal-greene", Kind::Convex, false, false, "n*log(n)", "<= 4*OPT",
+                             "CGAL 5.5 greene_approx_convex_partition_2", 1000000, cgal_greene});
+REGISTER_ALGORITHM(Algorithm{"cgal-y-monotone", Kind::Partition, false, false, "n*log(n)", "<= n",
+                             "CGAL 5.5 y_monotone_partition_2", 1000000, cgal_y_monotone});
+
+}  // namespace pd

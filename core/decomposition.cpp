@@ -1,0 +1,203 @@
+#include "core/decomposition.h"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace pd {
+
+VertexId Decomposition::add_steiner(const QPoint& p, std::int64_t boundary_edge) {
+  steiner.push_back({p, boundary_edge});
+  return static_cast<VertexId>(steiner.size() - 1);  // offset by n at the caller
+}
+
+std::vector<QPoint> exact_points(const Polygon& p, const Decomposition& d) {
+  std::vector<QPoint> pts;
+  pts.reserve(p.size() + d.steiner.size());
+  for (const Point& v : p.vertices()) pts.push_back(to_exact(v));
+  for (const SteinerPoint& s : d.steiner) pts.push_back(s.point);
+  return pts;
+}
+
+namespace {
+
+[[noreturn]] void malformed(const std::string& why) { throw std::invalid_argument(why); }
+
+// The boundary as a cycle of vertex ids, with each Steiner point placed inside the edge it names,
+// ordered along that edge.
+std::vector<VertexId> boundary_cycle(const Polygon& p, const Decomposition& d,
+                                     const std::vector<QPoint>& pts) {
+  const std::size_t n = p.size();
+  std::map<std::size_t, std::vector<VertexId>> on_edge;
+  for (std::size_t k = 0; k < d.steiner.size(); ++k) {
+    const std::int64_t e = d.steiner[k].boundary_edge;
+    if (e == kInterior) continue;
+    if (e < 0 || static_cast<std::size_t>(e) >= n)
+      malformed("Steiner point " + std::to_string(n + k) + " names boundary edge " + std::to_string(e) +
+                ", which does not exist");
+    const QPoint &a = pts[e], &b = pts[p.next(e)], &s = pts[n + k];
+    if (orient(a, b, s) != 0 || !CGAL::collinear_are_strictly_ordered_along_line(a, s, b))
+      malformed("Steiner point " + std::to_string(n + k) + " is not inside boundary edge " +
+                std::to_string(e) + "-" + std::to_string(p.next(e)));
+    on_edge[e].push_back(static_cast<VertexId>(n + k));
+  }
+  std::vector<VertexId> cycle;
+  cycle.reserve(n + d.steiner.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    cycle.push_back(static_cast<VertexId>(i));
+    auto it = on_edge.find(i);
+    if (it == on_edge.end()) continue;
+    const QPoint& a = pts[i];
+    std::sort(it->second.begin(), it->second.end(), [&](VertexId s, VertexId t) {
+      return CGAL::squared_distance(a, pts[s]) < CGAL::squared_distance(a, pts[t]);
+    });
+    cycle.insert(cycle.end(), it->second.begin(), it->second.end());
+  }
+  return cycle;
+}
+
+struct HalfEdge {
+  VertexId from, to;
+};
+
+// Counter-clockwise angular order of directions out of a common centre: first the half-plane
+// (upwards, or rightwards along the horizontal), then the turn. Exact.
+template <class P>
+struct AngularLess {
+  const std::vector<P>& pts;
+  const P& centre;
+  int half(const P& q) const {
+    return (q.y() > centre.y() || (q.y() == centre.y() && q.x() > centre.x())) ? 0 : 1;
+  }
+  bool operator()(VertexId a, VertexId b) const {
+    const int ha = half(pts[a]), hb = half(pts[b]);
+    if (ha != hb) return ha < hb;
+    return orient(centre, pts[a], pts[b]) > 0;
+  }
+};
+
+// Each vertex's outgoing half-edges, sorted counter-clockwise (compressed rows), with each
+// half-edge's twin.
+struct Rotation {
+  std::vector<std::size_t> start;  // row of vertex v: [start[v], start[v+1])
+  std::vector<VertexId> origin, target;
+  std::vector<std::size_t> twin;
+
+  // The face to the left of u->v continues along the half-edge just before v->u in v's
+  // counter-clockwise order.
+  std::size_t next_in_face(std::size_t h) const {
+    const std::size_t back = twin[h];
+    const VertexId v = target[h];
+    return back == start[v] ? start[v + 1] - 1 : back - 1;
+  }
+};
+
+std::vector<std::size_t> twins(const std::vector<VertexId>& origin, const std::vector<VertexId>& target) {
+  std::vector<std::size_t> order(origin.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto key = [&](std::size_t h) { return std::make_pair(origin[h], target[h]); };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  std::vector<std::size_t> twin(origin.size());
+  for (std::size_t h = 0; h < origin.size(); ++h) {
+    const auto reversed = std::make_pair(target[h], origin[h]);
+    twin[h] = *std::lower_bound(order.begin(), order.end(), reversed,
+                                [&](std::size_t a, const std::pair<VertexId, VertexId>& k) { return key(a) < k; });
+  }
+  return twin;
+}
+
+template <class P>
+Rotation sorted_rotation(const std::vector<P>& pts, const std::vector<HalfEdge>& edges) {
+  const std::size_t m = pts.size();
+  Rotation rot;
+  rot.start.assign(m + 1, 0);
+  for (const HalfEdge& h : edges) ++rot.start[h.from + 1];
+  std::partial_sum(rot.start.begin(), rot.start.end(), rot.start.begin());
+  rot.origin.resize(edges.size());
+  rot.target.resize(edges.size());
+  std::vector<std::size_t> fill(rot.start.begin(), rot.start.end() - 1);
+  for (const HalfEdge& h : edges) rot.target[fill[h.from]++] = h.to;
+  for (std::size_t v = 0; v < m; ++v) {
+    const auto first = rot.target.begin() + rot.start[v], last = rot.target.begin() + rot.start[v + 1];
+    const AngularLess<P> less{pts, pts[v]};
+    std::sort(first, last, less);
+    for (auto it = first; it + 1 < last; ++it)
+      if (!less(*it, *(it + 1)))
+        malformed("edges " + std::to_string(v) + "-" + std::to_string(*it) + " and " + std::to_string(v) +
+                  "-" + std::to_string(*(it + 1)) + " overlap");
+    std::fill(rot.origin.begin() + rot.start[v], rot.origin.begin() + rot.start[v + 1],
+              static_cast<VertexId>(v));
+  }
+  rot.twin = twins(rot.origin, rot.target);
+  return rot;
+}
+
+// The faces of the plane graph, except the one to the left of outer_from->outer_to (the outside).
+template <class P>
+std::vector<Piece> bounded_faces(const std::vector<P>& pts, const std::vector<HalfEdge>& edges,
+                                 VertexId outer_from, VertexId outer_to) {
+  const Rotation rot = sorted_rotation(pts, edges);
+  std::vector<char> used(edges.size(), 0);
+  std::vector<Piece> faces;
+  auto walk = [&](std::size_t s) {
+    Piece face;
+    for (std::size_t h = s; !used[h]; h = rot.next_in_face(h)) {
+      used[h] = 1;
+      face.push_back(rot.origin[h]);
+    }
+    return face;
+  };
+  for (std::size_t h = rot.start[outer_from]; h < rot.start[outer_from + 1]; ++h)
+    if (rot.target[h] == outer_to) walk(h);
+  for (std::size_t s = 0; s < edges.size(); ++s)
+    if (!used[s]) faces.push_back(walk(s));
+  return faces;
+}
+
+std::vector<HalfEdge> half_edges(const Decomposition& d, const std::vector<VertexId>& boundary,
+                                 std::size_t m) {
+  std::vector<HalfEdge> edges;
+  edges.reserve(2 * (boundary.size() + d.cuts.size()));
+  auto add = [&](VertexId a, VertexId b) {
+    edges.push_back({a, b});
+    edges.push_back({b, a});
+  };
+  for (std::size_t i = 0; i < boundary.size(); ++i) add(boundary[i], boundary[(i + 1) % boundary.size()]);
+  std::vector<std::pair<VertexId, VertexId>> seen;
+  seen.reserve(boundary.size() + d.cuts.size());
+  for (std::size_t i = 0; i < boundary.size(); ++i)
+    seen.push_back(std::minmax(boundary[i], boundary[(i + 1) % boundary.size()]));
+  for (std::size_t c = 0; c < d.cuts.size(); ++c) {
+    const Cut& cut = d.cuts[c];
+    if (cut.a >= m || cut.b >= m)
+      malformed("cut " + std::to_string(c) + " has an endpoint that is not a vertex");
+    if (cut.a == cut.b) malformed("cut " + std::to_string(c) + " joins vertex " + std::to_string(cut.a) + " to itself");
+    seen.push_back(std::minmax(cut.a, cut.b));
+    add(cut.a, cut.b);
+  }
+  std::sort(seen.begin(), seen.end());
+  const auto dup = std::adjacent_find(seen.begin(), seen.end());
+  if (dup != seen.end())
+    malformed("segment " + std::to_string(dup->first) + "-" + std::to_string(dup->second) + " appears twice");
+  return edges;
+}
+
+}  // namespace
+
+std::vector<Piece> pieces_of(const Polygon& p, const Decomposition& d) {
+  if (d.pieces) return *d.pieces;
+  const std::size_t m = p.size() + d.steiner.size();
+  if (d.steiner.empty()) {
+    std::vector<VertexId> boundary(p.size());
+    std::iota(boundary.begin(), boundary.end(), 0);
+    return bounded_faces(p.vertices(), half_edges(d, boundary, m), boundary[1], boundary[0]);
+  }
+  const std::vector<QPoint> pts = exact_points(p, d);
+  const std::vector<VertexId> boundary = boundary_cycle(p, d, pts);
+  return bounded_faces(pts, half_edges(d, boundary, m), boundary[1], boundary[0]);
+}
+
+}  // namespace pd

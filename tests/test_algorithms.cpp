@@ -1,0 +1,167 @@
+// Property tests over registry x families x seeds: every registered algorithm is tested the day it
+// registers. Our algorithms must be valid; the CGAL peers are reported as they are, and the validator's
+// verdict on them must agree with the independent check.
+#include "core/io.h"
+#include "core/registry.h"
+#include "core/validate.h"
+#include "generators/family.h"
+#include "tests/independent_check.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+namespace pd {
+namespace {
+
+bool is_peer(const Algorithm& a) { return a.name.rfind("cgal-", 0) == 0; }
+
+// The registry against the names that have landed: a registration lost to the linker fails here.
+TEST(Registry, HoldsEveryLandedAlgorithm) {
+  std::set<std::string> names;
+  for (const Algorithm& a : algorithms()) names.insert(a.name);
+  const std::set<std::string> expected = {"cgal-cdt",      "cgal-greene", "cgal-hertel-mehlhorn",
+                                          "cgal-optimal",  "cgal-y-monotone", "ear-n2"};
+  EXPECT_EQ(names, expected);
+}
+
+struct Case {
+  std::string family;
+  std::size_t n;
+  std::optional<std::size_t> r;
+  std::uint64_t seed;
+};
+
+std::vector<Case> small_cases() {
+  std::vector<Case> cases;
+  for (const Family& f : families())
+    for (std::size_t n : {12, 24, 60})
+      for (std::uint64_t seed : {1, 2, 3}) {
+        const std::size_t r = f.default_reflex(n);
+        if (!f.infeasible(n, r)) cases.push_back({f.name, n, r, seed});
+        if (f.controls_r && n == 24 && !f.infeasible(n, 1)) cases.push_back({f.name, n, std::size_t{1}, seed});
+      }
+  return cases;
+}
+
+independent::Cycle cycle_of(const std::vector<QPoint>& pts, const Piece& piece) {
+  independent::Cycle c;
+  for (VertexId v : piece) c.push_back(pts[v]);
+  return c;
+}
+
+struct Outcome {
+  std::size_t pieces;
+  Validation validation;
+};
+
+Outcome run_and_check(const Algorithm& a, const Polygon& p, const std::string& label) {
+  Counters counters;
+  const Decomposition d = a.run(p, counters);
+  const Validation v = validate(p, d, a.kind, a.steiner);
+  std::vector<Piece> pieces;
+  try {
+    pieces = pieces_of(p, d);
+  } catch (const std::invalid_argument&) {
+    EXPECT_FALSE(v.ok) << label;
+  }
+  if (!is_peer(a)) EXPECT_TRUE(v.ok) << label << ": " << v.reason;
+  if (p.size() <= 60 && !pieces.empty() && d.steiner.empty()) {
+    const std::vector<QPoint> pts = exact_points(p, d);
+    std::vector<independent::Cycle> cycles;
+    for (const Piece& piece : pieces) cycles.push_back(cycle_of(pts, piece));
+    const independent::Cycle outline(pts.begin(), pts.begin() + p.size());
+    const bool independent_ok = independent::tiles(outline, cycles, a.kind != Kind::Partition);
+    EXPECT_EQ(v.ok, independent_ok) << label << ": validator says " << (v.ok ? "valid" : v.reason);
+  }
+  if (v.ok) {
+    const std::size_t n = p.size(), r = p.reflex_count();
+    if (a.kind == Kind::Triangulation) EXPECT_EQ(pieces.size(), n - 2) << label;
+    if (a.kind == Kind::Convex) EXPECT_GE(pieces.size(), (r + 1) / 2 + 1) << label;
+    if (a.pieces_bound == "== r+1") EXPECT_EQ(pieces.size(), r + 1) << label;
+  }
+  return {pieces.size(), v};
+}
+
+class EveryAlgorithm : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryAlgorithm, IsValidOnEveryFamily) {
+  const Algorithm& a = *find_algorithm(GetParam());
+  for (const Case& c : small_cases()) {
+    if (c.n > a.size_ceiling) continue;
+    const Polygon p = Polygon::make(generate(c.family, c.n, c.r, c.seed));
+    run_and_check(a, p, a.name + " on " + c.family + " n=" + std::to_string(c.n) + " seed=" + std::to_string(c.seed));
+  }
+}
+
+// An optimal program's piece count cannot depend on the starting vertex (CGAL issue 4398).
+TEST_P(EveryAlgorithm, OptimalCountIsTheSameOnEveryRotation) {
+  const Algorithm& a = *find_algorithm(GetParam());
+  if (!a.optimal || is_peer(a)) GTEST_SKIP() << "not one of our optimal programs";
+  for (const Case& c : small_cases()) {
+    if (c.n > 12) continue;
+    std::vector<Point> ring = generate(c.family, c.n, c.r, c.seed);
+    const std::size_t first = run_and_check(a, Polygon::make(ring), a.name).pieces;
+    for (std::size_t k = 1; k < ring.size(); ++k) {
+      std::rotate(ring.begin(), ring.begin() + 1, ring.end());
+      EXPECT_EQ(run_and_check(a, Polygon::make(ring), a.name).pieces, first) << c.family << " rotation " << k;
+    }
+  }
+}
+
+// Real-world polygons: every earcut fixture gives a valid result or a clean PolygonError (holes,
+// self-touching rings).
+TEST_P(EveryAlgorithm, EarcutFixtures) {
+  const Algorithm& a = *find_algorithm(GetParam());
+  for (const auto& entry : std::filesystem::directory_iterator(PD_SOURCE_DIR "/data/earcut-fixtures")) {
+    const std::string name = entry.path().filename().string();
+    if (entry.path().extension() != ".json" || name == "expected.json") continue;
+    std::optional<Polygon> p;
+    try {
+      p = Polygon::make(read_polygon_file(entry.path().string()));
+    } catch (const PolygonError&) {
+      continue;
+    }
+    if (p->size() > a.size_ceiling) continue;
+    run_and_check(a, *p, a.name + " on " + name);
+  }
+}
+
+std::vector<std::string> registered_names() {
+  std::vector<std::string> names;
+  for (const Algorithm& a : algorithms()) names.push_back(a.name);
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, EveryAlgorithm, ::testing::ValuesIn(registered_names()),
+                         [](const auto& info) {
+                           std::string s = info.param;
+                           std::replace(s.begin(), s.end(), '-', '_');
+                           return s;
+                         });
+
+// The earcut fixtures whose outer ring is simple and which have no holes are accepted; the rest are
+// refused with a reason, never a crash. Pinned so that a reader or polygon-check change shows here.
+TEST(EarcutFixtures, AreReadOrRefusedWithAReason) {
+  std::size_t accepted = 0, holes = 0, not_simple = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(PD_SOURCE_DIR "/data/earcut-fixtures")) {
+    if (entry.path().extension() != ".json" || entry.path().filename() == "expected.json") continue;
+    try {
+      Polygon::make(read_polygon_file(entry.path().string()));
+      ++accepted;
+    } catch (const PolygonError& e) {
+      const std::string why = e.what();
+      holes += why == "holes are not supported";
+      not_simple += why.rfind("not simple", 0) == 0;
+      EXPECT_TRUE(why == "holes are not supported" || why.rfind("not simple", 0) == 0) << why;
+    }
+  }
+  EXPECT_GT(accepted, 10u);
+  EXPECT_GT(holes, 10u);
+  RecordProperty("accepted", static_cast<int>(accepted));
+}
+
+}  // namespace
+}  // namespace pd

@@ -1,0 +1,177 @@
+// The command line end to end, as CONTRACT.md promises it: list, generate, run, and the error
+// behaviour (one "error:" line, exit 2 for usage and 3 for a bad polygon, nothing on stdout).
+#include "core/json.h"
+#include "core/registry.h"
+#include "tests/independent_check.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace pd {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("polydecomp-cli-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path file(const std::string& name, const std::string& content) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << content;
+    return p;
+  }
+
+  Result cli(const std::string& args) {
+    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
+    const std::string command = std::string(PD_CLI) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
+    const int raw = std::system(command.c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  }
+
+  void expect_error(const std::string& args, int status, const std::string& message) {
+    const Result r = cli(args);
+    EXPECT_EQ(r.status, status) << args;
+    EXPECT_EQ(r.out, "") << args;
+    EXPECT_EQ(r.err, "error: " + message + "\n") << args;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, ListJsonHasEveryAlgorithmWithTheContractKeys) {
+  const Result r = cli("list --json");
+  ASSERT_EQ(r.status, 0);
+  const Json list = parse_json(r.out);
+  ASSERT_EQ(list.items.size(), algorithms().size());
+  for (const Json& a : list.items) {
+    for (const char* key : {"name", "kind", "steiner", "optimal", "time_bound", "pieces_bound", "source"})
+      EXPECT_NE(a.get(key), nullptr) << key;
+    EXPECT_NE(find_algorithm(a.get("name")->text), nullptr);
+  }
+  EXPECT_EQ(cli("list").status, 0);
+}
+
+TEST_F(Cli, GenerateIsDeterministicAndNamesTheFeasibleRange) {
+  const Result a = cli("generate --family random --n 50 --reflex 10 --seed 7");
+  const Result b = cli("generate --family random --n 50 --reflex 10 --seed 7 --format txt");
+  ASSERT_EQ(a.status, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_EQ(cli("generate --family convex --n 12 --format wkt").out.rfind("POLYGON ((", 0), 0u);
+  EXPECT_EQ(cli("generate --family convex --n 12 --format geojson").out.rfind("{\"type\": \"Polygon\"", 0), 0u);
+  const fs::path out = dir_ / "p.txt";
+  EXPECT_EQ(cli("generate --family spiral --n 40 -o " + out.string()).status, 0);
+  EXPECT_TRUE(fs::exists(out));
+  const Result bad = cli("generate --family convex --n 12 --reflex 3");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.out, "");
+  EXPECT_EQ(bad.err.rfind("error: ", 0), 0u);
+  EXPECT_NE(bad.err.find("feasible"), std::string::npos) << bad.err;
+  EXPECT_EQ(cli("generate --family nosuch --n 12").status, 2);
+  EXPECT_EQ(cli("generate --family convex --n -4").status, 2);
+}
+
+TEST_F(Cli, BadPolygonsGetOneErrorLineAndExit3) {
+  expect_error("run --algorithm ear-n2 --input " + file("bow.txt", "0 0\n2 2\n2 0\n0 2\n").string(), 3,
+               "not simple: edge 0-1 crosses edge 2-3");
+  expect_error("run --algorithm ear-n2 --input " + file("two.txt", "0 0\n1 1\n").string(), 3,
+               "2 vertices; a polygon needs at least 3");
+  expect_error("run --algorithm ear-n2 --input " + file("empty.txt", "").string(), 3, "the input is empty");
+  expect_error("run --algorithm ear-n2 --input " + file("nan.txt", "0 0\n1 NaN\n0 1\n").string(), 3,
+               "vertex 1 has a coordinate that is not finite");
+  expect_error("run --algorithm ear-n2 --input " + file("junk.txt", "hello world\n").string(), 3,
+               "line 1: 'hello' is not a number");
+  expect_error("run --algorithm ear-n2 --input " +
+                   file("hole.wkt", "POLYGON ((0 0, 9 0, 9 9, 0 9, 0 0), (1 1, 2 1, 1 2, 1 1))").string(),
+               3, "holes are not supported");
+  expect_error("run --algorithm ear-n2 --input " +
+                   file("hole.json", R"({"type":"Polygon","coordinates":[[[0,0],[9,0],[0,9]],[[1,1],[2,1],[1,2]]]})").string(),
+               3, "holes are not supported");
+  expect_error("run --algorithm ear-n2 --input " + (dir_ / "missing.txt").string(), 3,
+               "cannot read " + (dir_ / "missing.txt").string());
+}
+
+TEST_F(Cli, BadUsageExits2) {
+  expect_error("run --algorithm nosuch --input x", 2, "unknown algorithm 'nosuch'; 'polydecomp list' names them");
+  EXPECT_EQ(cli("run --input x").status, 2);
+  EXPECT_EQ(cli("frobnicate").status, 2);
+  EXPECT_EQ(cli("").status, 2);
+  EXPECT_EQ(cli("--help").status, 0);
+}
+
+TEST_F(Cli, AcceptsClockwiseClosedAndCollinearInput) {
+  const fs::path p = file("cw.txt", "# clockwise, closed, with a flat vertex at (2,0)\n0 0\n0 4\n4 4\n4 0\n2 0\n0 0\n");
+  const Result r = cli("run --algorithm ear-n2 --json --input " + p.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json j = parse_json(r.out);
+  EXPECT_EQ(j.get("n")->text, "5");
+  EXPECT_TRUE(j.get("valid")->boolean);
+  EXPECT_EQ(j.get("points")->items[1].items[1].text, "4");  // file order kept
+  EXPECT_EQ(j.get("piece_count")->text, "3");
+}
+
+// `valid` from run --json agrees with the independent exact check, for every algorithm, computed from
+// the JSON alone.
+TEST_F(Cli, RunJsonValidAgreesWithTheIndependentCheck) {
+  for (const std::string family : {"random", "spiral", "comb", "notch-heavy", "few-notches"}) {
+    const fs::path poly = dir_ / (family + ".txt");
+    ASSERT_EQ(cli("generate --family " + family + " --n 30 --seed 3 -o " + poly.string()).status, 0);
+    for (const Algorithm& a : algorithms()) {
+      if (a.size_ceiling < 30) continue;
+      const Result r = cli("run --json --algorithm " + a.name + " --input " + poly.string());
+      ASSERT_EQ(r.status, 0) << a.name << ": " << r.err;
+      const Json j = parse_json(r.out);
+      for (const char* key : {"algorithm", "n", "reflex", "points", "pieces", "piece_count", "steiner_count", "valid",
+                              "seconds", "counters"})
+        ASSERT_NE(j.get(key), nullptr) << key;
+      independent::Cycle points;
+      for (const Json& q : j.get("points")->items) {
+        auto coord = [](const Json& c) {
+          return c.type == Json::Type::String ? Rational(c.text) : Rational(std::strtod(c.text.c_str(), nullptr));
+        };
+        points.emplace_back(coord(q.items[0]), coord(q.items[1]));
+      }
+      const std::size_t n = std::stoul(j.get("n")->text);
+      independent::Cycle outline(points.begin(), points.begin() + n);
+      if (independent::area2(outline) < 0) std::reverse(outline.begin(), outline.end());
+      std::vector<independent::Cycle> pieces;
+      for (const Json& piece : j.get("pieces")->items) {
+        independent::Cycle c;
+        for (const Json& v : piece.items) c.push_back(points.at(std::stoul(v.text)));
+        pieces.push_back(c);
+      }
+      EXPECT_EQ(j.get("valid")->boolean, independent::tiles(outline, pieces, a.kind != Kind::Partition))
+          << a.name << " on " << family;
+    }
+  }
+}
+
+TEST_F(Cli, SvgIsWritten) {
+  const fs::path poly = file("l.txt", "0 0\n4 0\n4 2\n2 2\n2 4\n0 4\n"), svg = dir_ / "l.svg";
+  ASSERT_EQ(cli("run --algorithm ear-n2 --input " + poly.string() + " --svg " + svg.string()).status, 0);
+  EXPECT_NE(slurp(svg).find("</svg>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pd
