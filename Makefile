@@ -20,11 +20,13 @@ test: deps
 	@cmake --build $(TEST_BUILD) -j $(JOBS)
 	@cd $(TEST_BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# A sweep resumes after the keys its journal (results/SWEEP.journal.jsonl) already holds; delete the
+# journal to measure everything again.
 bench: build
-	@$(PY) analysis/sweep.py --sweep quick
+	@$(PY) analysis/sweep.py --sweep quick --build $(BUILD) --results results
 
 paper: build
-	@$(PY) analysis/sweep.py --sweep paper
+	@$(PY) analysis/sweep.py --sweep paper --build $(BUILD) --results results
 
 clean:
 	rm -rf $(BUILD) $(TEST_BUILD)

@@ -67,7 +67,7 @@ Decomposition cgal_y_monotone(const Polygon& p, Counters& c) {
 
 REGISTER_ALGORITHM(Algorithm{"cgal-optimal", Kind::Convex, false, true, "n^4", "== OPT",
                              "CGAL 5.5 optimal_convex_partition_2 (Greene's dynamic program)", 400, cgal_optimal});
-REGISTER_ALGORITHM(Algorithm{"cgal-hertel-mehlhorn", Kind::Convex, false, false, "n", "<= 4*OPT",
+REGISTER_ALGORITHM(Algorithm{"cgal-hertel-mehlhorn", Kind::Convex, false, false, "n*log(n)", "<= 4*OPT",
                              "CGAL 5.5 approx_convex_partition_2 (Hertel-Mehlhorn)", 1000000, cgal_hertel_mehlhorn});
 REGISTER_ALGORITHM(Algorithm{"cgal-greene", Kind::Convex, false, false, "n*log(n)", "<= 4*OPT",
                              "CGAL 5.5 greene_approx_convex_partition_2", 1000000, cgal_greene});

@@ -4,6 +4,7 @@
 // line on stderr beginning "error:" and nothing on stdout; output is assembled completely before any of
 // it is written, so a failure never leaves partial output.
 #include "core/io.h"
+#include "core/json.h"
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"

@@ -1,0 +1,171 @@
+"""Sweep results: the journal polydecomp-bench appends to, and the JSON and CSV assembled from it.
+
+The journal (SWEEP[.shard-I-of-K].journal.jsonl) holds one JSON object per line: {"context": {...}}
+per invocation, {"started": key, ...} before each key, and one Google Benchmark run object per
+finished key with "status" (ok, invalid, failed, skipped), "key_index" and "curves" added. The
+assembled SWEEP.json is Google Benchmark's format, {"context": {...}, "benchmarks": [...]}, one run per
+key in sweep order; SWEEP.csv has one row per key. Both are written to a temporary file and renamed,
+so a reader never sees half a file.
+"""
+
+import csv
+import io
+import json
+import os
+import re
+
+_KEY = re.compile(r"^(?P<algorithm>[^/]+)/(?P<family>[^/]+)/n:(?P<n>\d+)/r:(?P<r>\d+)/seed:(?P<seed>\d+)$")
+_TIME_UNITS = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
+_CSV_COLUMNS = ["key_index", "name", "algorithm", "family", "n", "r", "seed", "status", "reason", "iterations",
+                "real_time_s", "cpu_time_s", "pieces", "steiner", "lower_bound", "valid", "curves"]
+
+
+def parse_key(name):
+    """{"algorithm", "family", "n", "r", "seed"} of a key name, or None."""
+    m = _KEY.match(name)
+    if not m:
+        return None
+    return {"algorithm": m["algorithm"], "family": m["family"], "n": int(m["n"]), "r": int(m["r"]),
+            "seed": int(m["seed"])}
+
+
+def read_journal(path):
+    """(contexts, runs by name, started keys without a run) of one journal. A torn line (a crash in
+    the middle of a write) is skipped; a later run of a key replaces an earlier one."""
+    contexts, runs, started = [], {}, {}
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            try:
+                obj = json.loads(line)
+            except json.JSONDecodeError:
+                continue
+            if "context" in obj:
+                contexts.append(obj["context"])
+            elif "started" in obj:
+                started[obj["started"]] = obj
+            elif "name" in obj:
+                runs[obj["name"]] = obj
+    unfinished = [s for name, s in started.items() if name not in runs]
+    return contexts, runs, unfinished
+
+
+def append_line(path, obj):
+    """Appends one object as one line, in one write, as the harness does."""
+    with open(path, "a", encoding="utf-8") as f:
+        f.write(json.dumps(obj) + "\n")
+
+
+def crash_record(started, why):
+    """The run object for a key whose process died while running it."""
+    return {"name": started["started"], "run_name": started["started"], "run_type": "iteration", "repetitions": 1,
+            "repetition_index": 0, "threads": 1, "error_occurred": True, "error_message": "failed: " + why,
+            "iterations": 0, "real_time": 0, "cpu_time": 0, "time_unit": "ns",
+            "key_index": started.get("key_index", -1), "status": "failed", "curves": started.get("curves", [])}
+
+
+def merge_contexts(contexts):
+    """One context from several (invocations, shards): a field with one value keeps it; string fields
+    that differ are joined with " | " in order; other fields keep the last value."""
+    merged = {}
+    for context in contexts:
+        for key, value in context.items():
+            if key in merged and isinstance(value, str) and value not in merged[key].split(" | "):
+                merged[key] += " | " + value
+            elif key not in merged or not isinstance(value, str):
+                merged[key] = value
+    merged["invocations"] = str(len(contexts))
+    return merged
+
+
+def assemble(journal_paths, stem, extra_context=None):
+    """Writes STEM.json and STEM.csv from the journals; returns the number of keys."""
+    contexts, runs = [], {}
+    for path in journal_paths:
+        c, r, _ = read_journal(path)
+        contexts += c
+        runs.update(r)
+    context = merge_contexts(contexts)
+    context.update(extra_context or {})
+    ordered = sorted(runs.values(), key=lambda run: (run.get("key_index", -1), run["name"]))
+    write_atomic(stem + ".json", json.dumps({"context": context, "benchmarks": ordered}, indent=1) + "\n")
+    write_atomic(stem + ".csv", to_csv(ordered))
+    return len(ordered)
+
+
+def write_atomic(path, text):
+    tmp = path + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as f:
+        f.write(text)
+        f.flush()
+        os.fsync(f.fileno())
+    os.replace(tmp, path)
+
+
+def seconds(run, field="real_time"):
+    return run.get(field, 0) * _TIME_UNITS[run.get("time_unit", "ns")]
+
+
+def reason(run):
+    return run.get("error_message") or run.get("label", "")
+
+
+def to_csv(runs):
+    ops = sorted({k for run in runs for k in run if k.startswith("op_")})
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(_CSV_COLUMNS + ops)
+    for run in runs:
+        key = parse_key(run["name"]) or {}
+        row = {"key_index": run.get("key_index", ""), "name": run["name"], "status": run.get("status", ""),
+               "reason": reason(run), "iterations": run.get("iterations", ""),
+               "real_time_s": repr(seconds(run)), "cpu_time_s": repr(seconds(run, "cpu_time")),
+               "curves": ";".join(run.get("curves", []))}
+        for field in ("algorithm", "family", "n", "r", "seed"):
+            row[field] = key.get(field, "")
+        for field in ("n", "r", "pieces", "steiner", "lower_bound", "valid") + tuple(ops):
+            if field in run:
+                row[field] = _integer_text(run[field])
+        writer.writerow([row.get(c, "") for c in _CSV_COLUMNS + ops])
+    return out.getvalue()
+
+
+def _integer_text(v):
+    return str(int(v)) if float(v).is_integer() else repr(v)
+
+
+class Run:
+    """One key of a results file, flattened for analysis."""
+
+    def __init__(self, obj):
+        key = parse_key(obj["name"])
+        self.name = obj["name"]
+        self.algorithm, self.family, self.seed = key["algorithm"], key["family"], key["seed"]
+        self.n = int(obj.get("n", key["n"]))
+        self.r = int(obj.get("r", key["r"]))
+        self.status = obj.get("status", "failed" if obj.get("error_occurred") else "ok")
+        self.reason = reason(obj)
+        # CPU time of one call: the algorithms are single-threaded, and unlike wall time it does not
+        # count the time a shared machine gave to other processes.
+        self.seconds = seconds(obj, "cpu_time")
+        self.pieces = int(obj["pieces"]) if "pieces" in obj else None
+        self.valid = obj.get("valid") == 1
+        self.ops = {k[3:]: v for k, v in obj.items() if k.startswith("op_")}
+        self.curves = obj.get("curves", [])
+
+    @property
+    def polygon(self):
+        """The polygon's identity, shared by every algorithm run on it."""
+        return (self.family, self.n, self.r, self.seed)
+
+    @property
+    def timed(self):
+        return self.status in ("ok", "invalid")
+
+
+def load(path):
+    """(context, [Run]) of an assembled results file; keys not named algorithm/family/n:/r:/seed: are
+    ignored (e.g. a hand-added Google Benchmark entry)."""
+    with open(path, encoding="utf-8") as f:
+        doc = json.load(f)
+    runs = [Run(b) for b in doc.get("benchmarks", []) if parse_key(b.get("name", ""))]
+    return doc.get("context", {}), runs

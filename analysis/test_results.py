@@ -1,0 +1,108 @@
+import contextlib
+import csv
+import io
+import json
+import os
+import tempfile
+import unittest
+
+import merge
+import results
+import synthetic
+
+
+def write_lines(path, objects, torn=""):
+    with open(path, "w", encoding="utf-8") as f:
+        for obj in objects:
+            f.write(json.dumps(obj) + "\n")
+        f.write(torn)
+
+
+class JournalTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.runs = synthetic.runs()[:6]
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def path(self, name):
+        return os.path.join(self.tmp.name, name)
+
+    def test_torn_lines_are_ignored_and_later_runs_win(self):
+        retried = dict(self.runs[1], status="failed", error_occurred=True, error_message="failed: boom")
+        write_lines(self.path("j.jsonl"), [{"context": {"sweep": "s"}}, {"started": self.runs[0]["name"]}, self.runs[0],
+                                           self.runs[1], retried, {"started": self.runs[2]["name"], "key_index": 2}],
+                    torn='{"name": "half a line')
+        contexts, runs, unfinished = results.read_journal(self.path("j.jsonl"))
+        self.assertEqual(contexts, [{"sweep": "s"}])
+        self.assertEqual(sorted(runs), sorted([self.runs[0]["name"], self.runs[1]["name"]]))
+        self.assertEqual(runs[self.runs[1]["name"]]["status"], "failed")
+        self.assertEqual([u["started"] for u in unfinished], [self.runs[2]["name"]])
+
+    def test_crash_record_keeps_the_key_index(self):
+        record = results.crash_record({"started": "a/b/n:1/r:0/seed:1", "key_index": 7, "curves": ["vs-n r=0"]},
+                                      "died (SIGSEGV)")
+        self.assertEqual((record["status"], record["key_index"]), ("failed", 7))
+        self.assertEqual(record["error_message"], "failed: died (SIGSEGV)")
+
+    def test_assemble_orders_by_key_index_and_writes_csv(self):
+        write_lines(self.path("j.jsonl"), [{"context": {"sweep": "s", "date": "d1"}}] + list(reversed(self.runs)) +
+                    [{"context": {"sweep": "s", "date": "d2"}}])
+        self.assertEqual(results.assemble([self.path("j.jsonl")], self.path("s")), 6)
+        with open(self.path("s.json"), encoding="utf-8") as f:
+            doc = json.load(f)
+        self.assertEqual([b["key_index"] for b in doc["benchmarks"]], list(range(6)))
+        self.assertEqual(doc["context"]["date"], "d1 | d2")
+        self.assertEqual(doc["context"]["invocations"], "2")
+        with open(self.path("s.csv"), encoding="utf-8") as f:
+            rows = list(csv.DictReader(f))
+        first = self.runs[0]
+        self.assertEqual(rows[0]["name"], first["name"])
+        self.assertEqual(rows[0]["algorithm"], first["name"].split("/")[0])
+        self.assertEqual(int(rows[0]["pieces"]), first["pieces"])
+        self.assertAlmostEqual(float(rows[0]["real_time_s"]), first["real_time"] * 1e-9)
+        self.assertIn("op_steps", rows[0])
+        self.assertFalse(os.path.exists(self.path("s.json.tmp")))
+
+    def test_csv_of_a_skipped_key_takes_n_and_r_from_the_name(self):
+        skipped = [r for r in synthetic.runs() if r["status"] == "skipped"][0]
+        row = next(csv.DictReader(io.StringIO(results.to_csv([skipped]))))
+        self.assertEqual((row["status"], row["n"], row["pieces"]), ("skipped", "800", ""))
+        self.assertTrue(row["reason"].startswith("skipped (ceiling)"))
+
+
+class MergeTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        runs = synthetic.runs()
+        for i in (1, 2, 3):
+            write_lines(os.path.join(self.tmp.name, "s.shard-{}-of-3.journal.jsonl".format(i)),
+                        [{"context": {"sweep": "s", "host": "h{}".format(i)}}] + runs[i - 1::3])
+        self.count = len(runs)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_merges_every_shard_in_sweep_order(self):
+        with contextlib.redirect_stderr(io.StringIO()):
+            self.assertEqual(merge.main(["--sweep", "s", "--results", self.tmp.name]), 0)
+        with open(os.path.join(self.tmp.name, "s.json"), encoding="utf-8") as f:
+            doc = json.load(f)
+        self.assertEqual([b["key_index"] for b in doc["benchmarks"]], list(range(self.count)))
+        self.assertEqual(doc["context"]["host"], "h1 | h2 | h3")
+        self.assertEqual(doc["context"]["shard"], "merged from 3 shards")
+
+    def test_refuses_a_missing_shard(self):
+        os.remove(os.path.join(self.tmp.name, "s.shard-2-of-3.journal.jsonl"))
+        with self.assertRaisesRegex(ValueError, "missing shard"):
+            merge.shard_journals(self.tmp.name, "s")
+
+    def test_refuses_mixed_splits(self):
+        write_lines(os.path.join(self.tmp.name, "s.shard-1-of-2.journal.jsonl"), [])
+        with self.assertRaisesRegex(ValueError, "different splits"):
+            merge.shard_journals(self.tmp.name, "s")
+
+
+if __name__ == "__main__":
+    unittest.main()

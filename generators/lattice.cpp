@@ -1,0 +1,109 @@
+#include "generators/lattice.h"
+
+namespace pd::gen {
+
+bool angle_less(Vec u, Vec v) {
+  // Directions in [0, pi) come first; within a half-turn the cross product orders exactly.
+  const auto first_half = [](Vec w) { return w.y > 0 || (w.y == 0 && w.x > 0); };
+  if (first_half(u) != first_half(v)) return first_half(u);
+  return cross(u, v) > 0;
+}
+
+std::vector<char> random_flags(std::size_t size, std::size_t set, Rng& rng) {
+  std::vector<char> flags(size, 0);
+  std::fill(flags.begin(), flags.begin() + static_cast<std::ptrdiff_t>(set), 1);
+  shuffle(flags, rng);
+  return flags;
+}
+
+std::vector<std::size_t> balanced_split(std::size_t total, std::size_t parts, Rng& rng) {
+  const std::vector<char> larger = random_flags(parts, total % parts, rng);
+  std::vector<std::size_t> out(parts);
+  for (std::size_t i = 0; i < parts; ++i) out[i] = total / parts + static_cast<std::size_t>(larger[i]);
+  return out;
+}
+
+std::vector<Vec> convex_lattice_polygon(std::size_t n, Rng& rng) {
+  std::vector<Vec> edges;
+  const bool odd = n % 2 == 1;
+  if (odd) edges = {{1, 0}, {0, 1}, {-1, -1}};
+  // One representative of each pair {v, -v}: the half-plane a > 0, or a == 0 and b > 0. With the
+  // triangle, its directions are taken.
+  const auto representative = [odd](std::int64_t a, std::int64_t b) {
+    if (a == 0 && b <= 0) return false;
+    if (odd && ((a == 1 && b == 0) || (a == 0 && b == 1) || (a == 1 && b == 1))) return false;
+    return true;
+  };
+  for (Vec v : shortest_primitive_vectors((n - edges.size()) / 2, representative, rng)) {
+    edges.push_back(v);
+    edges.push_back(-v);
+  }
+  // Distinct directions summing to zero, sorted by angle: the turns are all strictly left.
+  std::sort(edges.begin(), edges.end(), angle_less);
+  std::vector<Vec> vertices(n);
+  for (std::size_t i = 1; i < n; ++i) vertices[i] = vertices[i - 1] + edges[i - 1];
+  return vertices;
+}
+
+namespace {
+
+// The run m of an arc's middle vectors (m, -1), (m', 1): 1/m must be below every used slope b/a >= 1/a.
+std::int64_t arc_middle(std::size_t interior, const std::vector<Vec>& reps, std::int64_t min_middle) {
+  std::int64_t middle = min_middle;
+  for (std::size_t i = 0; i < interior / 2; ++i) middle = std::max(middle, reps[i].x + 1);
+  return middle;
+}
+
+}  // namespace
+
+std::int64_t convex_arc_min_length(std::size_t interior, const std::vector<Vec>& reps,
+                                   std::int64_t min_middle) {
+  std::int64_t length = interior % 2 == 0 ? 1 : 2 * arc_middle(interior, reps, min_middle);
+  for (std::size_t i = 0; i < interior / 2; ++i) length += 2 * reps[i].x;
+  return length;
+}
+
+std::vector<Vec> convex_arc(std::size_t interior, std::int64_t length, const std::vector<Vec>& reps,
+                            std::int64_t min_middle) {
+  std::vector<Vec> used(reps.begin(), reps.begin() + static_cast<std::ptrdiff_t>(interior / 2));
+  std::sort(used.begin(), used.end(), slope_less);
+  std::int64_t rest = length;
+  for (Vec v : used) rest -= 2 * v.x;
+
+  std::vector<Vec> arc;
+  arc.reserve(interior + 1);
+  for (auto it = used.rbegin(); it != used.rend(); ++it) arc.push_back({it->x, -it->y});
+  if (interior % 2 == 0) {
+    arc.push_back({rest, 0});
+  } else {
+    const std::int64_t middle = arc_middle(interior, reps, min_middle);
+    arc.push_back({middle, -1});
+    arc.push_back({rest - middle, 1});
+  }
+  for (Vec v : used) arc.push_back(v);
+  return arc;
+}
+
+std::vector<Point> centred_points(const std::vector<Vec>& vertices) {
+  std::int64_t min_x = vertices[0].x, max_x = min_x, min_y = vertices[0].y, max_y = min_y;
+  for (Vec v : vertices) {
+    min_x = std::min(min_x, v.x);
+    max_x = std::max(max_x, v.x);
+    min_y = std::min(min_y, v.y);
+    max_y = std::max(max_y, v.y);
+  }
+  // Floor of the midpoint, so that the centring is the same integer shift everywhere.
+  const auto mid = [](std::int64_t lo, std::int64_t hi) {
+    const std::int64_t sum = lo + hi;
+    return sum >= 0 ? sum / 2 : -((-sum + 1) / 2);
+  };
+  const Vec centre{mid(min_x, max_x), mid(min_y, max_y)};
+  std::vector<Point> points;
+  points.reserve(vertices.size());
+  for (Vec v : vertices) {
+    points.emplace_back(static_cast<double>(v.x - centre.x), static_cast<double>(v.y - centre.y));
+  }
+  return points;
+}
+
+}  // namespace pd::gen

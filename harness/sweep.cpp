@@ -1,0 +1,229 @@
+#include "harness/sweep.h"
+
+#include "core/json.h"
+#include "core/registry.h"
+#include "generators/family.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+namespace pd {
+namespace {
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SweepError("cannot read sweeps file " + path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+const Json& member(const Json& object, const std::string& key, const std::string& where) {
+  const Json* v = object.get(key);
+  if (!v) throw SweepError(where + ": missing \"" + key + "\"");
+  return *v;
+}
+
+double positive_number(const Json& object, const std::string& key, const std::string& where) {
+  const Json& v = member(object, key, where);
+  const double x = v.is_number() ? v.number() : -1;
+  if (!(x > 0)) throw SweepError(where + ": \"" + key + "\" must be a positive number");
+  return x;
+}
+
+std::size_t count_of(const Json& v, const std::string& where) {
+  const double x = v.is_number() ? v.number() : -1;
+  if (!(x >= 0) || x != static_cast<double>(static_cast<std::size_t>(x)))
+    throw SweepError(where + ": expected a non-negative integer");
+  return static_cast<std::size_t>(x);
+}
+
+std::vector<const Json*> array_items(const Json& v, const std::string& where) {
+  if (!v.is_array() || v.items.empty()) throw SweepError(where + ": expected a non-empty array");
+  std::vector<const Json*> items;
+  for (const Json& item : v.items) items.push_back(&item);
+  return items;
+}
+
+// A reflex rule as written in the file: a number, "default", or "n/K" / "P*n/K".
+std::string rule_text(const Json& v, const std::string& where) {
+  if (v.is_number()) return std::to_string(count_of(v, where));
+  if (v.type == Json::Type::String) return v.text;
+  throw SweepError(where + ": a reflex rule is a number, \"default\" or a fraction of n such as \"n/4\"");
+}
+
+// Numerator and denominator of a rule "n", "n/K", "P*n" or "P*n/K".
+bool parse_fraction(const std::string& rule, std::size_t& p, std::size_t& k) {
+  std::size_t at = 0;
+  p = 1;
+  k = 1;
+  const auto digits = [&](std::size_t& out) {
+    const std::size_t start = at;
+    while (at < rule.size() && std::isdigit(static_cast<unsigned char>(rule[at]))) ++at;
+    if (at == start) return false;
+    out = std::stoul(rule.substr(start, at - start));
+    return true;
+  };
+  if (std::isdigit(static_cast<unsigned char>(rule[0]))) {
+    if (!digits(p) || at >= rule.size() || rule[at++] != '*') return false;
+  }
+  if (at >= rule.size() || rule[at++] != 'n') return false;
+  if (at < rule.size() && (rule[at++] != '/' || !digits(k) || k == 0)) return false;
+  return at == rule.size();
+}
+
+void check_rule(const std::string& rule, const std::string& where) {
+  std::size_t p, k;
+  const bool number = !rule.empty() && std::all_of(rule.begin(), rule.end(), [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+  });
+  if (!number && rule != "default" && !parse_fraction(rule, p, k))
+    throw SweepError(where + ": bad reflex rule \"" + rule + "\" (a number, \"default\", \"n/K\" or \"P*n/K\")");
+}
+
+std::size_t resolve_reflex(const std::string& rule, const Family& family, std::size_t n) {
+  if (rule == "default") return family.default_reflex(n);
+  std::size_t p, k;
+  if (parse_fraction(rule, p, k)) return n * p / k;
+  return std::stoul(rule);
+}
+
+std::vector<std::string> select_families(const Json& v, const std::string& where) {
+  std::vector<std::string> names;
+  if (v.type == Json::Type::String && (v.text == "all" || v.text == "controls_r")) {
+    for (const Family& f : families())
+      if (v.text == "all" || f.controls_r) names.push_back(f.name);
+    return names;
+  }
+  for (const Json* item : array_items(v, where + " families")) {
+    if (item->type != Json::Type::String || !find_family(item->text))
+      throw SweepError(where + ": unknown family " + (item->type == Json::Type::String ? item->text : "?"));
+    names.push_back(item->text);
+  }
+  return names;
+}
+
+std::vector<std::string> select_algorithms(const Json* v, const std::string& where) {
+  std::vector<std::string> names;
+  if (!v || (v->type == Json::Type::String && v->text == "all")) {
+    for (const Algorithm& a : algorithms()) names.push_back(a.name);
+    return names;
+  }
+  for (const Json* item : array_items(*v, where + " algorithms")) {
+    if (item->type != Json::Type::String || !find_algorithm(item->text))
+      throw SweepError(where + ": unknown algorithm " + (item->type == Json::Type::String ? item->text : "?"));
+    names.push_back(item->text);
+  }
+  return names;
+}
+
+// One entry of "curves": {"vs": "n", "n": [...], "r": [rules]} is one curve per rule;
+// {"vs": "r", "n": [...], "r": [rules]} is one curve per n.
+std::vector<Sweep::Curve> expand_curves(const Json& entry, const std::string& where) {
+  const Json& vs = member(entry, "vs", where);
+  if (vs.type != Json::Type::String || (vs.text != "n" && vs.text != "r"))
+    throw SweepError(where + ": \"vs\" must be \"n\" or \"r\"");
+  const auto families = select_families(member(entry, "families", where), where);
+  std::vector<std::size_t> ns;
+  for (const Json* v : array_items(member(entry, "n", where), where + " n")) ns.push_back(count_of(*v, where + " n"));
+  std::vector<std::string> rules;
+  for (const Json* v : array_items(member(entry, "r", where), where + " r")) {
+    rules.push_back(rule_text(*v, where + " r"));
+    check_rule(rules.back(), where);
+  }
+  std::vector<Sweep::Curve> curves;
+  if (vs.text == "n") {
+    for (const std::string& rule : rules) {
+      Sweep::Curve c{"vs-n r=" + rule, families, {}};
+      for (std::size_t n : ns) c.points.emplace_back(n, rule);
+      curves.push_back(std::move(c));
+    }
+  } else {
+    for (std::size_t n : ns) {
+      Sweep::Curve c{"vs-r n=" + std::to_string(n), families, {}};
+      for (const std::string& rule : rules) c.points.emplace_back(n, rule);
+      curves.push_back(std::move(c));
+    }
+  }
+  return curves;
+}
+
+std::string sweep_names(const Json& root) {
+  std::string names;
+  for (const auto& [name, value] : root.fields) names += (names.empty() ? "" : ", ") + name;
+  return names;
+}
+
+}  // namespace
+
+std::string SweepPolygon::id() const {
+  return family + "/n:" + std::to_string(n) + "/r:" + std::to_string(r) + "/seed:" + std::to_string(seed);
+}
+
+std::string default_sweeps_file() { return PD_SOURCE_DIR "/harness/sweeps.json"; }
+
+Sweep load_sweep(const std::string& path, const std::string& name) {
+  Json root;
+  try {
+    root = parse_json(read_file(path));
+  } catch (const JsonError& e) {
+    throw SweepError(path + ": " + e.what());
+  }
+  const Json* spec = root.is_object() ? root.get(name) : nullptr;
+  if (!spec || !spec->is_object())
+    throw SweepError("no sweep '" + name + "' in " + path + "; it defines: " + sweep_names(root));
+  const std::string where = path + ": sweep " + name;
+  Sweep s;
+  s.name = name;
+  if (const Json* d = spec->get("description")) s.description = d->text;
+  s.algorithms = select_algorithms(spec->get("algorithms"), where);
+  for (const Json* v : array_items(member(*spec, "seeds", where), where + " seeds")) s.seeds.push_back(count_of(*v, where + " seeds"));
+  s.min_time = positive_number(*spec, "min_time", where);
+  s.budget_seconds = positive_number(*spec, "budget_seconds", where);
+  s.timeout_seconds = positive_number(*spec, "timeout_seconds", where);
+  const auto entries = array_items(member(*spec, "curves", where), where + " curves");
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    for (Sweep::Curve& c : expand_curves(*entries[i], where + " curve " + std::to_string(i + 1)))
+      s.curves.push_back(std::move(c));
+  return s;
+}
+
+std::vector<SweepPolygon> sweep_polygons(const Sweep& sweep) {
+  std::map<std::tuple<std::string, std::size_t, std::size_t, std::uint64_t>, std::vector<std::string>> grid;
+  for (const Sweep::Curve& curve : sweep.curves) {
+    for (const std::string& family_name : curve.families) {
+      const Family& family = *find_family(family_name);
+      for (const auto& [n, rule] : curve.points) {
+        const std::size_t r = resolve_reflex(rule, family, n);
+        if (family.infeasible(n, r)) continue;
+        for (std::uint64_t seed : sweep.seeds) {
+          auto& curves = grid[{family_name, n, r, seed}];
+          if (std::find(curves.begin(), curves.end(), curve.label) == curves.end()) curves.push_back(curve.label);
+        }
+      }
+    }
+  }
+  std::vector<SweepPolygon> polygons;
+  for (auto& [key, curves] : grid)
+    polygons.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), std::get<3>(key), std::move(curves)});
+  return polygons;
+}
+
+Shard parse_shard(const std::string& text) {
+  Shard s;
+  char slash = 0;
+  std::istringstream in(text);
+  if (!(in >> s.index >> slash >> s.count) || slash != '/' || !in.eof() || s.index < 1 || s.index > s.count)
+    throw SweepError("bad --shard '" + text + "'; expected i/k with 1 <= i <= k, e.g. 2/8");
+  return s;
+}
+
+std::string key_name(const std::string& algorithm, const SweepPolygon& polygon) {
+  return algorithm + "/" + polygon.id();
+}
+
+}  // namespace pd

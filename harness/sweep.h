@@ -1,0 +1,80 @@
+// Sweeps: named grids of (algorithm, family, n, r, seed) keys, read from one JSON file
+// (harness/sweeps.json), and the deterministic list of keys a sweep (or one shard of it) runs.
+//
+// A sweep is a set of curves. A curve is an axis and a grid: time versus n (a list of n, one curve per
+// reflex rule) or time versus r (a list of reflex rules, one curve per n). A reflex rule is a number,
+// "default" (the family's own choice for that n) or a fraction of n written "n/8", "3*n/8". Points a
+// family cannot realise (Family::infeasible) are left out of the grid, not reported as errors.
+//
+// Keys run polygon by polygon: by family, then n, then r, then seed, then algorithm. So every polygon
+// is built once, and a grid point runs after every point it dominates (smaller n and smaller r), which
+// is what the budget's prediction needs.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pd {
+
+class SweepError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Sweep {
+  std::string name;
+  std::string description;
+  std::vector<std::string> algorithms;  // in registry order
+  std::vector<std::uint64_t> seeds;
+  double min_time = 0;         // seconds Google Benchmark repeats each key for, at least
+  double budget_seconds = 0;   // a key predicted to take longer than this (one call) is skipped
+  double timeout_seconds = 0;  // a key still running after this long is stopped and recorded skipped
+
+  struct Curve {
+    std::string label;  // e.g. "vs-n r=default", "vs-r n=1000"
+    std::vector<std::string> families;
+    std::vector<std::pair<std::size_t, std::string>> points;  // n and the reflex rule
+  };
+  std::vector<Curve> curves;
+};
+
+// One polygon of a sweep: a family at (n, r) with a seed, and the curves it lies on.
+struct SweepPolygon {
+  std::string family;
+  std::size_t n, r;
+  std::uint64_t seed;
+  std::vector<std::string> curves;
+
+  std::string id() const;  // "family/n:N/r:R/seed:S"
+};
+
+struct Shard {
+  std::size_t index = 1, count = 1;  // shard `index` of `count`, 1-based
+};
+
+// harness/sweeps.json of the source tree this program was built from.
+std::string default_sweeps_file();
+
+// Reads sweep `name` from the JSON file at `path`. Throws SweepError naming the problem (unknown
+// sweep, family or algorithm; a malformed rule), listing the sweeps the file defines.
+Sweep load_sweep(const std::string& path, const std::string& name);
+
+// The sweep's polygons in run order, without duplicates and without infeasible points.
+std::vector<SweepPolygon> sweep_polygons(const Sweep& sweep);
+
+// Parses "i/k" with 1 <= i <= k; throws SweepError.
+Shard parse_shard(const std::string& text);
+
+// Whether polygon number `position` (in run order) belongs to the shard. Shards take polygons
+// round-robin, so each gets a similar mix of small and large ones.
+inline bool in_shard(std::size_t position, const Shard& shard) {
+  return position % shard.count == shard.index - 1;
+}
+
+// The benchmark name of a key: "algorithm/family/n:N/r:R/seed:S".
+std::string key_name(const std::string& algorithm, const SweepPolygon& polygon);
+
+}  // namespace pd

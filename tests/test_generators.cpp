@@ -1,0 +1,344 @@
+// Tests of the polygon families: exact n and r, counter-clockwise, simple, integer coordinates below
+// 2^31, no collinear vertices, exact feasibility ranges, determinism (pinned checksums), and n = 10^6.
+#include "generators/family.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace pd {
+namespace {
+
+constexpr std::size_t kMaxN = 2'000'000;
+constexpr std::size_t kMaxXPatternN = 1'000'000;
+
+struct IntPoint {
+  std::int64_t x, y;
+  bool operator<(const IntPoint& o) const { return x != o.x ? x < o.x : y < o.y; }
+  bool operator==(const IntPoint& o) const { return x == o.x && y == o.y; }
+};
+
+int orient(IntPoint p, IntPoint q, IntPoint r) {
+  const __int128 c =
+      static_cast<__int128>(q.x - p.x) * (r.y - p.y) - static_cast<__int128>(q.y - p.y) * (r.x - p.x);
+  return (c > 0) - (c < 0);
+}
+
+// The coordinates as integers; fails the test unless each is an integer of magnitude below 2^31.
+std::vector<IntPoint> integer_points(const std::vector<Point>& polygon) {
+  std::vector<IntPoint> out;
+  out.reserve(polygon.size());
+  for (const Point& p : polygon) {
+    for (double c : {p.x(), p.y()}) {
+      EXPECT_EQ(c, std::floor(c)) << "non-integer coordinate " << c;
+      EXPECT_LT(std::abs(c), 2147483648.0) << "coordinate beyond 2^31";
+    }
+    out.push_back({static_cast<std::int64_t>(p.x()), static_cast<std::int64_t>(p.y())});
+  }
+  return out;
+}
+
+std::size_t reflex_count(const std::vector<Point>& polygon) {
+  const std::size_t n = polygon.size();
+  std::size_t reflex = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (pd::orient(polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n]) < 0) ++reflex;
+  }
+  return reflex;
+}
+
+std::size_t collinear_count(const std::vector<IntPoint>& v) {
+  const std::size_t n = v.size();
+  std::size_t collinear = 0;
+  for (std::size_t i = 0; i < n; ++i) collinear += orient(v[(i + n - 1) % n], v[i], v[(i + 1) % n]) == 0;
+  return collinear;
+}
+
+__int128 twice_signed_area(const std::vector<IntPoint>& v) {
+  __int128 area = 0;
+  for (std::size_t i = 0, n = v.size(); i < n; ++i) {
+    const IntPoint& p = v[i];
+    const IntPoint& q = v[(i + 1) % n];
+    area += static_cast<__int128>(p.x) * q.y - static_cast<__int128>(q.x) * p.y;
+  }
+  return area;
+}
+
+bool in_box(IntPoint p, IntPoint q, IntPoint r) {
+  return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
+         r.y <= std::max(p.y, q.y);
+}
+
+// Whether the closed segments ab and cd share a point.
+bool segments_meet(IntPoint a, IntPoint b, IntPoint c, IntPoint d) {
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && in_box(a, b, c)) || (o2 == 0 && in_box(a, b, d)) || (o3 == 0 && in_box(c, d, a)) ||
+         (o4 == 0 && in_box(c, d, b));
+}
+
+// O(n^2): empty when the cycle is simple, else the first problem found.
+std::string simplicity_problem(const std::vector<IntPoint>& v) {
+  const std::size_t n = v.size();
+  std::vector<IntPoint> sorted = v;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return "duplicate vertex";
+  for (std::size_t i = 0; i < n; ++i) {
+    // Adjacent edges v[i]v[i+1] and v[i+1]v[i+2] may share only v[i+1].
+    const IntPoint a = v[i], b = v[(i + 1) % n], c = v[(i + 2) % n];
+    if (orient(a, b, c) == 0 && (in_box(b, c, a) || in_box(a, b, c))) {
+      return "edges " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + " overlap";
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const IntPoint a = v[i], b = v[(i + 1) % n];
+    const std::int64_t lo_x = std::min(a.x, b.x), hi_x = std::max(a.x, b.x);
+    const std::int64_t lo_y = std::min(a.y, b.y), hi_y = std::max(a.y, b.y);
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through the closing edge
+      const IntPoint c = v[j], d = v[(j + 1) % n];
+      if (std::max(c.x, d.x) < lo_x || std::min(c.x, d.x) > hi_x || std::max(c.y, d.y) < lo_y ||
+          std::min(c.y, d.y) > hi_y) {
+        continue;
+      }
+      if (segments_meet(a, b, c, d))
+        return "edges " + std::to_string(i) + " and " + std::to_string(j) + " meet";
+    }
+  }
+  return "";
+}
+
+// Every property, with the O(n^2) simplicity check.
+void expect_valid(const std::string& family, std::size_t n, std::size_t r, std::uint64_t seed) {
+  SCOPED_TRACE(family + " n=" + std::to_string(n) + " r=" + std::to_string(r) +
+               " seed=" + std::to_string(seed));
+  const std::vector<Point> polygon = generate(family, n, r, seed);
+  ASSERT_EQ(polygon.size(), n);
+  EXPECT_EQ(reflex_count(polygon), r);
+  const std::vector<IntPoint> v = integer_points(polygon);
+  EXPECT_GT(twice_signed_area(v), 0) << "not counter-clockwise";
+  EXPECT_EQ(collinear_count(v), 0u);
+  EXPECT_EQ(simplicity_problem(v), "");
+}
+
+// The documented ranges, restated independently of the families' code.
+const std::map<std::string, std::function<bool(std::size_t, std::size_t)>>& documented_ranges() {
+  static const std::map<std::string, std::function<bool(std::size_t, std::size_t)>> ranges{
+      {"comb", [](std::size_t n, std::size_t r) { return n >= 3 && n <= kMaxN && 3 * r <= 2 * (n - 3); }},
+      {"convex", [](std::size_t n, std::size_t r) { return n >= 3 && n <= kMaxN && r == 0; }},
+      {"few-notches",
+       [](std::size_t n, std::size_t r) { return n >= 4 && n <= kMaxN && 2 * r <= n && r + 4 <= n; }},
+      {"notch-heavy",
+       [](std::size_t n, std::size_t r) { return n >= 3 && n <= kMaxN && r + 3 <= n && n - 3 - r <= r; }},
+      {"random", [](std::size_t n, std::size_t r) { return n >= 3 && n <= kMaxN && (r == 0 || r + 4 <= n); }},
+      {"spiral",
+       [](std::size_t n, std::size_t r) { return n >= 6 && n <= kMaxN && r >= 1 && 2 * r + 4 <= n; }},
+      {"x-pattern",
+       [](std::size_t n, std::size_t r) {
+         return n <= kMaxXPatternN && r >= 3 && r % 3 == 0 && n >= (r == 3 ? 12 : 3 * r + 4);
+       }},
+  };
+  return ranges;
+}
+
+std::uint64_t fnv1a(const std::vector<Point>& polygon) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (const Point& p : polygon) {
+    const std::string line = std::to_string(static_cast<std::int64_t>(p.x())) + " " +
+                             std::to_string(static_cast<std::int64_t>(p.y())) + "\n";
+    for (unsigned char c : line) {
+      hash ^= c;
+      hash *= 0x100000001b3ULL;
+    }
+  }
+  return hash;
+}
+
+TEST(Generators, SimplicityCheckFindsProblems) {
+  EXPECT_EQ(simplicity_problem({{0, 0}, {4, 0}, {4, 4}, {0, 4}}), "");
+  EXPECT_NE(simplicity_problem({{0, 0}, {4, 4}, {4, 0}, {0, 4}}), "");          // bow tie
+  EXPECT_NE(simplicity_problem({{0, 0}, {4, 0}, {2, 0}, {2, 3}}), "");          // folds back on itself
+  EXPECT_NE(simplicity_problem({{0, 0}, {6, 0}, {6, 6}, {3, 0}, {0, 6}}), "");  // vertex on an edge
+  EXPECT_NE(simplicity_problem({{0, 0}, {6, 0}, {3, 3}, {6, 6}, {0, 6}, {3, 3}}), "");  // repeated vertex
+}
+
+TEST(Generators, RegistryListsTheFamiliesSortedByName) {
+  std::vector<std::string> names;
+  for (const Family& f : families()) names.push_back(f.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"comb", "convex", "few-notches", "notch-heavy", "random",
+                                             "spiral", "x-pattern"}));
+  ASSERT_NE(find_family("spiral"), nullptr);
+  EXPECT_EQ(find_family("spiral")->name, "spiral");
+  EXPECT_EQ(find_family("no-such"), nullptr);
+  EXPECT_FALSE(register_family(*find_family("comb")));
+  for (const Family& f : families()) {
+    EXPECT_FALSE(f.shape.empty()) << f.name;
+    EXPECT_FALSE(f.range.empty()) << f.name;
+  }
+  EXPECT_FALSE(find_family("convex")->controls_r);
+  EXPECT_TRUE(find_family("random")->controls_r);
+}
+
+TEST(Generators, UnknownFamilyNamesTheFamilies) {
+  try {
+    generate("hexagon", 10, std::nullopt, 1);
+    FAIL() << "no exception";
+  } catch (const GeneratorError&) {
+    FAIL() << "GeneratorError for an unknown family";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "unknown family hexagon; families: comb, convex, few-notches, notch-heavy, random, spiral, "
+              "x-pattern");
+  }
+}
+
+TEST(Generators, InfeasibleMatchesTheDocumentedRange) {
+  for (const auto& [name, feasible] : documented_ranges()) {
+    const Family* f = find_family(name);
+    ASSERT_NE(f, nullptr) << name;
+    std::vector<std::size_t> sizes;
+    for (std::size_t n = 0; n <= 200; ++n) sizes.push_back(n);
+    for (std::size_t n : {kMaxXPatternN - 1, kMaxXPatternN, kMaxXPatternN + 1, kMaxN - 1, kMaxN, kMaxN + 1}) {
+      sizes.push_back(n);
+    }
+    for (std::size_t n : sizes) {
+      std::vector<std::size_t> rs;
+      if (n <= 200) {
+        for (std::size_t r = 0; r <= n + 2; ++r) rs.push_back(r);
+      } else {
+        rs = {0,     1,     3,     6,     n / 4, n / 2 - 3, n / 2 - 2, n / 2, (2 * n - 6) / 3,
+              n - 6, n - 5, n - 4, n - 3, n - 2};
+      }
+      for (std::size_t r : rs) {
+        EXPECT_EQ(!f->infeasible(n, r).has_value(), feasible(n, r)) << name << " n=" << n << " r=" << r;
+      }
+    }
+  }
+}
+
+TEST(Generators, InfeasibleThrowsNamingTheRange) {
+  for (const Family& f : families()) {
+    for (std::size_t n = 0; n <= 40; ++n) {
+      for (std::size_t r = 0; r <= n + 2; ++r) {
+        if (!f.infeasible(n, r)) continue;
+        try {
+          generate(f.name, n, r, 1);
+          ADD_FAILURE() << f.name << " made n=" << n << " r=" << r;
+        } catch (const GeneratorError& e) {
+          const std::string what = e.what();
+          EXPECT_NE(what.find("feasible"), std::string::npos) << what;
+          EXPECT_NE(what.find(f.range), std::string::npos) << what;
+        }
+      }
+    }
+  }
+  try {
+    generate("spiral", 10, 9, 1);
+    FAIL() << "no exception";
+  } catch (const GeneratorError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "family spiral cannot make n=10, r=9: feasible 6 <= n <= 2000000, 1 <= r <= n/2-2");
+  }
+}
+
+TEST(Generators, EveryFeasibleSmallCaseIsValid) {
+  for (const Family& f : families()) {
+    for (std::size_t n = 3; n <= 48; ++n) {
+      for (std::size_t r = 0; r + 3 <= n; ++r) {
+        if (f.infeasible(n, r)) continue;
+        for (std::uint64_t seed : {1, 2, 3, 4, 5}) expect_valid(f.name, n, r, seed);
+      }
+    }
+  }
+}
+
+TEST(Generators, MediumSizesAtTheEdgesOfTheRanges) {
+  for (const Family& f : families()) {
+    for (std::size_t n : {97, 256, 1001, 2500}) {
+      std::vector<std::size_t> candidates{
+          0,           1,     3,     16,    n / 4, f.default_reflex(n), n / 2 - 2, n / 2, (2 * n - 6) / 3,
+          (n - 2) / 2, n - 6, n - 5, n - 4, n - 3};
+      if (n == 2500) candidates = {0, 1, 3, f.default_reflex(n), n - 4, n - 3};
+      for (std::size_t r : candidates) {
+        if (!f.infeasible(n, r)) expect_valid(f.name, n, r, 11 + n);
+      }
+    }
+  }
+}
+
+TEST(Generators, DefaultReflexIsFeasible) {
+  for (const Family& f : families()) {
+    std::size_t least = 0;
+    while (f.infeasible(least, f.default_reflex(least))) ++least;
+    for (std::size_t n = least; n <= 500; ++n) {
+      EXPECT_FALSE(f.infeasible(n, f.default_reflex(n))) << f.name << " n=" << n;
+    }
+    for (std::size_t n : {4096, 65537, 1'000'000}) {
+      EXPECT_FALSE(f.infeasible(n, f.default_reflex(n))) << f.name << " n=" << n;
+    }
+    const std::vector<Point> polygon = generate(f.name, 100, std::nullopt, 5);
+    EXPECT_EQ(reflex_count(polygon), f.default_reflex(100)) << f.name;
+  }
+}
+
+TEST(Generators, SameArgumentsGiveTheSamePolygon) {
+  for (const Family& f : families()) {
+    const std::size_t n = 300;
+    const std::size_t r = f.default_reflex(n);
+    EXPECT_EQ(generate(f.name, n, r, 42), generate(f.name, n, r, 42)) << f.name;
+  }
+  EXPECT_NE(generate("random", 300, 40, 1), generate("random", 300, 40, 2));
+}
+
+TEST(Generators, ChecksumsArePinned) {
+  struct Case {
+    const char* family;
+    std::size_t n, r;
+    std::uint64_t seed;
+    std::uint64_t fnv;
+  };
+  const Case cases[] = {
+      {"random", 1000, 250, 1, 0x5d7a53d8053f50bfULL},
+      {"random", 50, 46, 7, 0xfbceff2b57fc60c7ULL},
+      {"convex", 999, 0, 3, 0xd5f23e43b2291e9bULL},
+      {"few-notches", 5000, 16, 2, 0x691186c156f5aca2ULL},
+      {"spiral", 400, 150, 5, 0xc8b70be5ebfd77eaULL},
+      {"comb", 301, 120, 9, 0x910fbd8b90117cabULL},
+      {"notch-heavy", 700, 500, 4, 0x06ef5b2316f4e86cULL},
+      {"x-pattern", 12, 3, 1, 0x5675edbaae52109cULL},
+      {"x-pattern", 500, 30, 8, 0x68a8b6a2ca73f126ULL},
+  };
+  for (const Case& c : cases) {
+    EXPECT_EQ(fnv1a(generate(c.family, c.n, c.r, c.seed)), c.fnv)
+        << c.family << " n=" << c.n << " r=" << c.r << " seed=" << c.seed;
+  }
+}
+
+// O(n) checks for large n: size, coordinates, r, orientation, no collinear vertex.
+void expect_large_valid(const std::string& family, std::size_t n, std::size_t r) {
+  SCOPED_TRACE(family + " n=" + std::to_string(n));
+  const std::vector<Point> polygon = generate(family, n, r, 2024);
+  ASSERT_EQ(polygon.size(), n);
+  EXPECT_EQ(reflex_count(polygon), r);
+  const std::vector<IntPoint> v = integer_points(polygon);
+  EXPECT_GT(twice_signed_area(v), 0);
+  EXPECT_EQ(collinear_count(v), 0u);
+}
+
+TEST(Generators, MillionVertices) {
+  expect_large_valid("random", 1'000'000, 250'000);
+  expect_large_valid("convex", 1'000'000, 0);
+  expect_large_valid("few-notches", 1'000'000, 16);
+  expect_large_valid("few-notches", 100'000, 16);
+  expect_large_valid("spiral", 1'000'000, 499'998);
+  expect_large_valid("comb", 1'000'000, 499'998);
+  expect_large_valid("notch-heavy", 1'000'000, 999'997);
+}
+
+}  // namespace
+}  // namespace pd
