@@ -1,8 +1,9 @@
-// The polydecomp command line: list | generate | run (see CONTRACT.md).
+// The polydecomp command line: list | generate | run | cut (see CONTRACT.md).
 //
 // Exit status: 0 success, 2 bad usage, 3 bad polygon, 4 an algorithm failed. Every failure prints one
 // line on stderr beginning "error:" and nothing on stdout; output is assembled completely before any of
 // it is written, so a failure never leaves partial output.
+#include "algorithms/polygon_cutting.h"
 #include "core/io.h"
 #include "core/json.h"
 #include "core/registry.h"
@@ -35,7 +36,8 @@ struct Exit {
 const char* kUsageText =
     "usage: polydecomp list [--json]\n"
     "       polydecomp generate --family F --n N [--reflex R] [--seed S] [--format txt|wkt|geojson] [-o FILE]\n"
-    "       polydecomp run --algorithm A --input FILE [--json] [--svg FILE] [--no-validate]\n";
+    "       polydecomp run --algorithm A --input FILE [--json] [--svg FILE] [--no-validate]\n"
+    "       polydecomp cut --input FILE [--weights reflex|all|FILE] [--vertical] [--json]\n";
 
 po::variables_map parse(const std::vector<std::string>& args, const po::options_description& opts) {
   po::variables_map vm;
@@ -171,8 +173,121 @@ int cmd_run(const std::vector<std::string>& args) {
   return 0;
 }
 
+// `cut`'s weights in counter-clockwise order: reflex vertices, all vertices, or a file of 0/1 values,
+// one per vertex in the input's order (without a repeated closing vertex; '#' starts a comment).
+std::vector<int> cut_weights(const std::string& spec, const Polygon& p) {
+  if (spec == "reflex") return vertex_weights(p, WeightRule::Reflex);
+  if (spec == "all") return vertex_weights(p, WeightRule::All);
+  std::ifstream in(spec, std::ios::binary);
+  if (!in) usage("cannot read weights file " + spec + " (--weights takes reflex, all or a file)");
+  std::vector<int> in_file_order;
+  for (std::string token; in >> token;) {
+    if (token[0] == '#') {
+      std::getline(in, token);
+      continue;
+    }
+    if (token != "0" && token != "1") usage("weights file " + spec + ": '" + token + "' is not 0 or 1");
+    in_file_order.push_back(token == "1");
+  }
+  if (in_file_order.size() != p.size())
+    usage("weights file " + spec + ": " + std::to_string(in_file_order.size()) + " weights for " +
+          std::to_string(p.size()) + " vertices");
+  std::vector<int> w(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) w[i] = in_file_order[p.input_index(i)];
+  return w;
+}
+
+std::string json_counters(const Counters& counters) {
+  std::string out = "{";
+  for (const auto& [name, value] : counters) out += (out.size() > 1 ? ", " : "") + json_quote(name) + ": " + std::to_string(value);
+  return out + "}";
+}
+
+// The fair cut in the input's indices, a < b; C1 weighs the vertices strictly between a and b in the
+// input's order, C2 the others but a and b.
+std::string fair_cut_report(const Polygon& p, const std::vector<int>& weights, bool json) {
+  Counters counters;
+  const FairCut cut = fair_cut(p, weights, counters);
+  const std::size_t a = std::min(p.input_index(cut.a), p.input_index(cut.b));
+  const std::size_t b = std::max(p.input_index(cut.a), p.input_index(cut.b));
+  std::vector<int> in_file_order(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) in_file_order[p.input_index(i)] = weights[i];
+  std::int64_t c1 = 0;
+  for (std::size_t k = a + 1; k < b; ++k) c1 += in_file_order[k];
+  const std::int64_t c2 = cut.C - c1 - in_file_order[a] - in_file_order[b];
+  auto number = [](auto v) { return std::to_string(v); };
+  if (json)
+    return "{\"a\": " + number(a) + ", \"b\": " + number(b) + ", \"C\": " + number(cut.C) + ", \"C1\": " + number(c1) +
+           ", \"C2\": " + number(c2) + ", \"counters\": " + json_counters(counters) + "}\n";
+  return "cut: a=" + number(a) + " b=" + number(b) + " C=" + number(cut.C) + " C1=" + number(c1) + " C2=" + number(c2) + "\n";
+}
+
+// Theorem 3's chord AB in the input's indices: A inside edge_a, B inside edge_b or B a vertex; C1
+// weighs the vertices from edge_a's second vertex on to B in the input's order, C2 the others (B
+// excluded).
+std::string vertical_report(const Polygon& p, const std::vector<int>& weights, bool json) {
+  Counters counters;
+  const VerticalCut cut = vertical_cut(p, weights, counters);
+  const std::size_t n = p.size();
+  auto file_edge = [&](std::size_t e) {
+    const std::size_t i = p.input_index(e), j = p.input_index(p.next(e));
+    return (i + 1) % n == j ? std::make_pair(i, j) : std::make_pair(j, i);
+  };
+  std::vector<int> in_file_order(n);
+  for (std::size_t i = 0; i < n; ++i) in_file_order[p.input_index(i)] = weights[i];
+  const auto edge_a = file_edge(cut.edge_a);
+  const std::size_t b = cut.b_is_vertex ? p.input_index(cut.edge_b) : file_edge(cut.edge_b).first;
+  const std::size_t stop = cut.b_is_vertex ? b : (b + 1) % n;
+  std::int64_t c1 = 0;
+  for (std::size_t k = edge_a.second; k != stop; k = (k + 1) % n) c1 += in_file_order[k];
+  const std::int64_t c2 = cut.C - c1 - (cut.b_is_vertex ? in_file_order[b] : 0);
+  auto coord = [&](const Rational& v) {
+    const std::string t = rational_text(v);
+    return json && t.find('/') != std::string::npos ? json_quote(t) : t;
+  };
+  auto point = [&](const QPoint& q) { return "[" + coord(q.x()) + ", " + coord(q.y()) + "]"; };
+  auto number = [](auto v) { return std::to_string(v); };
+  if (json)
+    return "{\"A\": " + point(cut.A) + ", \"B\": " + point(cut.B) + ", \"edge_a\": [" + number(edge_a.first) + ", " +
+           number(edge_a.second) + "], " +
+           (cut.b_is_vertex ? "\"vertex_b\": " + number(b) : "\"edge_b\": [" + number(b) + ", " + number((b + 1) % n) + "]") +
+           ", \"C\": " + number(cut.C) + ", \"C1\": " + number(c1) + ", \"C2\": " + number(c2) +
+           ", \"counters\": " + json_counters(counters) + "}\n";
+  return "vertical: A=" + point(cut.A) + " on edge " + number(edge_a.first) + "-" + number(edge_a.second) + " B=" +
+         point(cut.B) + (cut.b_is_vertex ? " at vertex " + number(b) : " on edge " + number(b) + "-" + number((b + 1) % n)) +
+         " C=" + number(cut.C) + " C1=" + number(c1) + " C2=" + number(c2) + "\n";
+}
+
+// The polygon-cutting theorem (algorithms/polygon_cutting.h). A polygon with no fair cut promised (a
+// triangle, weights totalling 1) is refused with exit status 3, like a bad polygon.
+int cmd_cut(const std::vector<std::string>& args) {
+  po::options_description opts;
+  opts.add_options()("input", po::value<std::string>()->required(), "polygon file")(
+      "weights", po::value<std::string>()->default_value("reflex"), "reflex|all|FILE")(
+      "vertical", "Theorem 3's vertical chord instead of the diagonal")("json", "JSON output");
+  const auto vm = parse(args, opts);
+  std::optional<Polygon> polygon;
+  try {
+    polygon = Polygon::make(read_polygon_file(vm["input"].as<std::string>()));
+  } catch (const PolygonError& e) {
+    throw Exit{kBadPolygon, e.what()};
+  }
+  const std::vector<int> weights = cut_weights(vm["weights"].as<std::string>(), *polygon);
+  std::string out;
+  try {
+    out = vm.count("vertical") ? vertical_report(*polygon, weights, vm.count("json") > 0)
+                               : fair_cut_report(*polygon, weights, vm.count("json") > 0);
+  } catch (const NoFairCut& e) {
+    throw Exit{kBadPolygon, std::string("no fair cut: ") + e.what()};
+  } catch (const std::exception& e) {
+    throw Exit{kAlgorithmFailed, std::string("cut failed: ") + e.what()};
+  }
+  emit(out, "");
+  return 0;
+}
+
 int dispatch(const std::vector<std::string>& argv) {
-  if (argv.empty()) usage("no command; commands: list, generate, run ('polydecomp --help' shows their options)");
+  if (argv.empty()) usage("no command; commands: list, generate, run, cut ('polydecomp --help' shows their options)");
   if (argv[0] == "--help" || argv[0] == "-h" || argv[0] == "help") {
     std::cout << kUsageText;
     return 0;
@@ -181,7 +296,8 @@ int dispatch(const std::vector<std::string>& argv) {
   if (argv[0] == "list") return cmd_list(rest);
   if (argv[0] == "generate") return cmd_generate(rest);
   if (argv[0] == "run") return cmd_run(rest);
-  usage("unknown command '" + argv[0] + "'; commands: list, generate, run");
+  if (argv[0] == "cut") return cmd_cut(rest);
+  usage("unknown command '" + argv[0] + "'; commands: list, generate, run, cut");
 }
 
 }  // namespace

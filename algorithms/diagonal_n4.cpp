@@ -1,0 +1,79 @@
+// diagonal-n4: diagonal-based triangulation, exactly as the slides give it (Rosen, "Polygon
+// Partitioning", lecture slides 003, "Diagonal-based triangulation" and "Brute force triangulation").
+//
+// Time O(n^4), space O(n^2). Pre: a simple counter-clockwise polygon; collinear (180-degree) vertices
+// are allowed. Output: n-3 diagonals, n-2 non-degenerate triangles (the greedy triangulation), no
+// Steiner points.
+//
+// Repeat n-3 times: for each of the O(n^2) candidate segments v_i v_j not yet output, test it against
+// every edge and both neighbourhoods (O(n), diagonal_test.h) and against the diagonals already output
+// (O(n)); output a proper one. The slides leave open which proper diagonal to output; this one outputs
+// the shortest (ties by endpoints), so that every round really examines every candidate, as the
+// slides' count has it, and so that `diagonal-n3` can be checked against it: both build the greedy
+// triangulation. A maximal set of non-crossing diagonals triangulates the polygon, and with collinear
+// vertices too its faces are non-degenerate triangles (a face with more than three vertices still has
+// a diagonal), so n-3 rounds always find one.
+#include "algorithms/diagonal_test.h"
+
+#include <optional>
+#include <vector>
+
+namespace pd {
+namespace {
+
+using namespace diagonal_test;
+
+class RepeatedDiagonalSearch {
+ public:
+  explicit RepeatedDiagonalSearch(const Polygon& p) : p_(p), n_(p.size()), output_(n_ * n_, 0) {}
+
+  Decomposition run(Counters& counters) {
+    Decomposition d;
+    d.cuts.reserve(n_ - 3);
+    for (std::size_t round = 0; round + 3 < n_; ++round) {
+      const Cut c = *best_candidate(d.cuts);
+      output_[c.a * n_ + c.b] = 1;
+      d.add_cut(c.a, c.b);
+    }
+    counters["diagonal_tests"] = diagonal_tests_;
+    counters["edge_tests"] = edge_tests_;
+    counters["crossing_tests"] = crossing_tests_;
+    return d;
+  }
+
+ private:
+  std::optional<Cut> best_candidate(const std::vector<Cut>& chosen) {
+    std::optional<Cut> best;
+    for (std::size_t i = 0; i < n_; ++i)
+      for (std::size_t j = i + 2; j < n_; ++j) {
+        if ((i == 0 && j + 1 == n_) || output_[i * n_ + j]) continue;
+        const Cut c{static_cast<VertexId>(i), static_cast<VertexId>(j)};
+        if (proper(c, chosen) && (!best || picked_before(p_, c, *best))) best = c;
+      }
+    return best;
+  }
+
+  bool proper(const Cut& c, const std::vector<Cut>& chosen) {
+    ++diagonal_tests_;
+    if (!is_diagonal(p_, c.a, c.b, edge_tests_)) return false;
+    for (const Cut& t : chosen) {
+      ++crossing_tests_;
+      if (cross(p_, c, t)) return false;
+    }
+    return true;
+  }
+
+  const Polygon& p_;
+  std::size_t n_;
+  std::vector<char> output_;  // output_[i*n + j]: v_i v_j (i < j) already output
+  std::int64_t diagonal_tests_ = 0, edge_tests_ = 0, crossing_tests_ = 0;
+};
+
+Decomposition diagonal_n4(const Polygon& p, Counters& counters) { return RepeatedDiagonalSearch(p).run(counters); }
+
+}  // namespace
+
+REGISTER_ALGORITHM(Algorithm{"diagonal-n4", Kind::Triangulation, false, false, "n^4", "== n-2",
+                             "Rosen slides (003), diagonal-based triangulation, O(n^4)", 200, diagonal_n4});
+
+}  // namespace pd

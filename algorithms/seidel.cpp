@@ -1,0 +1,429 @@
+// seidel: Seidel's randomized triangulation (R. Seidel, "A simple and fast incremental randomized
+// algorithm for computing trapezoidal decompositions and for triangulating polygons", Computational
+// Geometry: Theory and Applications 1(1), 1991; listed in Rosen's slides 003, "Towards linear-time
+// triangulation").
+//
+// Expected time O(n log* n) over the algorithm's own random choices (for every input), space O(n).
+// Pre: a simple counter-clockwise polygon; collinear (180-degree) vertices and horizontal edges
+// allowed. Output: n-3 diagonals, n-2 non-degenerate triangles, no Steiner points.
+//
+// 1. The trapezoidal decomposition of the edges, inserted in random order, with its search structure
+//    (a DAG of point nodes, segment nodes and trapezoid leaves). Inserting an edge locates its
+//    endpoints, splits their trapezoids by horizontal cuts, threads the edge down through the
+//    trapezoids it crosses, splits each in two and merges the pieces whose separating cut the edge
+//    now blocks.
+// 2. The log* phases: the insertions are cut into phases ending after N(h) = ceil(n / log^(h) n)
+//    edges. After each phase the edges not yet inserted are traced through the decomposition and
+//    each remembers the trapezoids its endpoints lie in, so that its own search later starts there.
+//    A run of pending edges is walked from trapezoid to trapezoid; where it starts, at an inserted
+//    edge, one search from the run's previous start finds it (expected O(log(N(h)/N(h-1))) for at
+//    most N(h) runs, O(n) per phase like the walking).
+// 3. In every trapezoid inside the polygon whose top and bottom vertices are not joined by one of its
+//    sides, the diagonal between them; this cuts the polygon into monotone pieces, which
+//    triangulate_monotone_pieces (monotone.h) triangulates in linear time.
+//
+// Deviations from the classic C implementation (Narkhede and Manocha, Graphics Gems V), which
+// compares coordinates with a tolerance C_EPS = 1e-7: every test here is exact, orient() or a
+// comparison of coordinates. Heights are compared in the sweep order `above` (y, then x; monotone.h),
+// an infinitesimal shear under which no two vertices are level, so horizontal edges and equal heights
+// are ordinary. A point equal to a node's point, or lying on a node's segment (only an endpoint shared
+// by two edges can), is decided by the other endpoint of the edge being inserted, as if the point
+// were moved a little along that edge. The classic code relocates every pending endpoint by a search
+// from its old leaf; this one walks the pending edges as the paper does. The random order comes from
+// the project's own generator with a fixed seed, so the output is the same on every machine.
+#include "algorithms/monotone.h"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace pd {
+namespace {
+
+constexpr std::uint32_t kNone = 0xffffffffu;
+using Pair = std::array<std::uint32_t, 2>;  // up to two neighbours, left to right, kNone-padded
+
+Pair pair_of(std::uint32_t a, std::uint32_t b) { return a == kNone ? Pair{b, kNone} : Pair{a, b}; }
+bool has_two(const Pair& a) { return a[1] != kNone; }
+std::uint32_t other(const Pair& a, std::uint32_t x) { return a[0] == x ? a[1] : a[0]; }
+void replace(Pair& a, std::uint32_t from, std::uint32_t to) {
+  for (std::uint32_t& x : a)
+    if (x == from) x = to;
+}
+
+// A trapezoid of the decomposition: between the horizontal cuts through vertices hi and lo and
+// between segments left and right (segment s is polygon edge s -> s+1); kNone is unbounded.
+struct Trapezoid {
+  std::uint32_t hi, lo, left, right;
+  Pair up, down;  // neighbours across the cuts at hi and at lo
+};
+
+// One record is both a trapezoid and, once the trapezoid is destroyed, the search-structure node that
+// replaced it, so that a search ends on the trapezoid itself and the nodes pointing at a destroyed
+// trapezoid need no update. A point node keeps its point and a segment node its endpoints (upper
+// first), so that a search step reads one record.
+struct Cell {
+  enum Kind : std::uint8_t { Leaf, PointNode, SegmentNode };
+  Kind kind;
+  std::uint32_t first, second;  // point node: above, below; segment node: left, right
+  union {
+    Trapezoid z;
+    double geo[4];
+  };
+};
+
+// Segment s (polygon edge s -> s+1) with its endpoints in the sweep order.
+struct Segment {
+  Point top, bottom;
+  std::uint32_t upper, lower;
+  std::uint32_t start[2];  // where the searches for the ends at vertex s and at vertex s+1 start
+};
+
+// Per edge, in a byte of its own so that the scans over all edges stay in the cache.
+enum EdgeFlag : std::uint8_t { kDescends = 1, kInserted = 2 };
+
+// SplitMix64 (Steele, Lea, Flood 2014): a fixed, portable source for the random insertion order.
+class SplitMix {
+ public:
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+
+ private:
+  std::uint64_t state_ = 0x5e1de1;
+};
+
+class Trapezoidation {
+ public:
+  explicit Trapezoidation(const Polygon& p)
+      : p_(p), n_(static_cast<std::uint32_t>(p.size())), segs_(n_), flags_(n_, 0), has_point_(n_, 0) {
+    for (std::uint32_t s = 0; s < n_; ++s) {
+      const std::uint32_t t = next(s);
+      const bool down = above(p_[s], p_[t]);
+      segs_[s] = down ? Segment{p_[s], p_[t], s, t, {0, 0}} : Segment{p_[t], p_[s], t, s, {0, 0}};
+      if (down) flags_[s] = kDescends;
+    }
+    cells_.reserve(6 * std::size_t{n_} + 16);  // about 5n trapezoids are made; growing would copy them
+    allocate({kNone, kNone, kNone, kNone, {kNone, kNone}, {kNone, kNone}});  // the plane; cell 0 is the root
+  }
+
+  // Inserts every edge in random order, phase by phase, tracing the rest after each phase.
+  void build() {
+    const std::vector<std::uint32_t> order = random_order();
+    std::uint32_t done = 0;
+    for (std::uint32_t end : phase_ends()) {
+      for (; done < end; ++done) insert(order[done]);
+      if (done < n_) trace_pending();
+      ++phases_;
+    }
+  }
+
+  // Step 3: the top-bottom diagonal of every inside trapezoid whose sides do not join them.
+  std::vector<Cut> monotone_diagonals() const {
+    std::vector<Cut> diagonals;
+    for (const Cell& c : cells_) {
+      if (c.kind != Cell::Leaf || !inside(c.z) || joins(c.z.left, c.z) || joins(c.z.right, c.z)) continue;
+      diagonals.push_back({c.z.hi, c.z.lo});
+    }
+    return diagonals;
+  }
+
+  void count(Counters& counters) const {
+    counters["trapezoids"] = made_;
+    counters["search_steps"] = search_steps_;
+    counters["trace_steps"] = trace_steps_;
+    counters["phases"] = phases_;
+  }
+
+ private:
+  std::uint32_t next(std::uint32_t v) const { return v + 1 == n_ ? 0 : v + 1; }
+  const Point& at(std::uint32_t v) const { return p_[v]; }
+  Trapezoid& z(std::uint32_t t) { return cells_[t].z; }
+  std::uint32_t upper(std::uint32_t s) const { return segs_[s].upper; }
+  std::uint32_t lower(std::uint32_t s) const { return segs_[s].lower; }
+  // Which of segment s's two search starts belongs to its endpoint v.
+  std::uint32_t& start_of(std::uint32_t s, std::uint32_t v) { return segs_[s].start[v == s ? 0 : 1]; }
+  // orient(upper, lower, q) > 0: q is right of the downward segment s.
+  bool right_of(std::uint32_t s, std::uint32_t q) const { return orient(segs_[s].top, segs_[s].bottom, at(q)) > 0; }
+
+  bool inserted(std::uint32_t s) const { return flags_[s] & kInserted; }
+  // The polygon lies right of its downward edges (counter-clockwise order).
+  bool inside(const Trapezoid& t) const { return t.left != kNone && (flags_[t.left] & kDescends); }
+  // Side s (edge s -> s+1) runs from the trapezoid's top vertex to its bottom vertex.
+  bool joins(std::uint32_t s, const Trapezoid& t) const {
+    return s != kNone && ((s == t.hi && next(s) == t.lo) || (s == t.lo && next(s) == t.hi));
+  }
+
+  std::vector<std::uint32_t> random_order() const {
+    std::vector<std::uint32_t> order(n_);
+    for (std::uint32_t s = 0; s < n_; ++s) order[s] = s;
+    SplitMix rng;
+    for (std::uint32_t k = n_; k > 1; --k) std::swap(order[k - 1], order[rng.next() % k]);
+    return order;
+  }
+
+  // N(h) = ceil(n / log^(h) n) while log^(h) n > 1, then n: log* n phases.
+  std::vector<std::uint32_t> phase_ends() const {
+    std::vector<std::uint32_t> ends;
+    for (double v = std::log2(double(n_)); v > 1; v = std::log2(v))
+      ends.push_back(static_cast<std::uint32_t>(std::ceil(n_ / v)));
+    ends.push_back(n_);
+    return ends;
+  }
+
+  std::uint32_t allocate(const Trapezoid& t) {
+    Cell c;
+    c.kind = Cell::Leaf;
+    c.first = c.second = kNone;
+    c.z = t;
+    cells_.push_back(c);
+    ++made_;
+    return static_cast<std::uint32_t>(cells_.size() - 1);
+  }
+
+  void make_point_node(std::uint32_t cell, const Point& q, std::uint32_t above_it, std::uint32_t below_it) {
+    Cell& c = cells_[cell];
+    c.kind = Cell::PointNode;
+    c.first = above_it;
+    c.second = below_it;
+    c.geo[0] = q.x();
+    c.geo[1] = q.y();
+  }
+
+  void make_segment_node(std::uint32_t cell, std::uint32_t s, std::uint32_t left, std::uint32_t right) {
+    Cell& c = cells_[cell];
+    c.kind = Cell::SegmentNode;
+    c.first = left;
+    c.second = right;
+    c.geo[0] = segs_[s].top.x();
+    c.geo[1] = segs_[s].top.y();
+    c.geo[2] = segs_[s].bottom.x();
+    c.geo[3] = segs_[s].bottom.y();
+  }
+
+  // The trapezoid holding point q moved a little towards point toward, searching from cell `from`.
+  // q lies on a node's segment only as one of its endpoints.
+  std::uint32_t locate(const Point& q, const Point& toward, std::uint32_t from) {
+    std::uint32_t cell = from;
+    for (;; ++search_steps_) {
+      const Cell& c = cells_[cell];
+      if (c.kind == Cell::Leaf) return cell;
+      if (c.kind == Cell::PointNode) {
+        const Point x(c.geo[0], c.geo[1]);
+        cell = above(x == q ? toward : q, x) ? c.first : c.second;
+      } else {
+        const Point top(c.geo[0], c.geo[1]), bottom(c.geo[2], c.geo[3]);
+        const Point& probe = (q == top || q == bottom) ? toward : q;
+        cell = orient(top, bottom, probe) > 0 ? c.second : c.first;
+      }
+    }
+  }
+
+  // One search per edge: for its upper endpoint. The lower endpoint is met while threading.
+  void insert(std::uint32_t s) {
+    const std::uint32_t u = upper(s);
+    const std::uint32_t t = locate(segs_[s].top, segs_[s].bottom, start_of(s, u));
+    Crossed first{z(t), t, t};
+    if (!has_point_[u]) first = cut_keeping_above(first, u, segs_[s].top);
+    thread(s, first);
+    flags_[s] |= kInserted;
+  }
+
+  // A trapezoid the edge being inserted crosses: its contents; the id its neighbours know it by; the
+  // cell that becomes its search node. When an endpoint of the edge has just cut a trapezoid, the
+  // part the edge then splits at once gets no record of its own: its neighbours across the far side
+  // still know it by the old trapezoid's id, and its node is a fresh cell under the endpoint's node.
+  struct Crossed {
+    Trapezoid z;
+    std::uint32_t id, node;
+  };
+
+  std::uint32_t new_node() {
+    cells_.emplace_back();
+    return static_cast<std::uint32_t>(cells_.size() - 1);
+  }
+
+  // Cuts c through vertex v (at q): the part above becomes a trapezoid, the part below is returned.
+  Crossed cut_keeping_above(Crossed c, std::uint32_t v, const Point& q) {
+    Trapezoid top = c.z;
+    top.lo = v;
+    const std::uint32_t a = allocate(top), below = new_node();
+    for (std::uint32_t x : top.up)
+      if (x != kNone) replace(z(x).down, c.id, a);
+    make_point_node(c.node, q, a, below);
+    has_point_[v] = 1;
+    c.z.hi = v;
+    c.z.up = {a, kNone};
+    c.node = below;
+    return c;
+  }
+
+  // Cuts c through vertex v (at q): the part below becomes a trapezoid, the part above is returned.
+  Crossed cut_keeping_below(Crossed c, std::uint32_t v, const Point& q) {
+    Trapezoid bottom = c.z;
+    bottom.hi = v;
+    const std::uint32_t b = allocate(bottom), above_v = new_node();
+    for (std::uint32_t x : bottom.down)
+      if (x != kNone) replace(z(x).up, c.id, b);
+    make_point_node(c.node, q, above_v, b);
+    has_point_[v] = 1;
+    c.z.lo = v;
+    c.z.down = {b, kNone};
+    c.node = above_v;
+    return c;
+  }
+
+  // Threads segment s down from c, just below its upper endpoint, to its lower endpoint, cutting the
+  // trapezoid holding the lower endpoint at it first if it is new. Each crossed trapezoid is replaced
+  // by a left and a right piece; at each cut the edge crosses, the pieces on the side away from the
+  // cut's vertex merge (the cut now ends at s), those on its side stay apart.
+  void thread(std::uint32_t s, Crossed c) {
+    const std::uint32_t l = lower(s);
+    const Point& bottom = segs_[s].bottom;
+    std::uint32_t left = kNone, right = kNone;
+    for (;;) {
+      if (!has_point_[l] && (c.z.lo == kNone || above(bottom, at(c.z.lo)))) c = cut_keeping_below(c, l, bottom);
+      const Trapezoid& old = c.z;
+      if (left == kNone) {
+        left = allocate({old.hi, kNone, old.left, s, {kNone, kNone}, {kNone, kNone}});
+        right = allocate({old.hi, kNone, s, old.right, {kNone, kNone}, {kNone, kNone}});
+        link_top(old, c.id, left, right, other_edge(upper(s), s));
+      }
+      make_segment_node(c.node, s, left, right);
+      if (old.lo == l) {
+        z(left).lo = z(right).lo = l;
+        link_bottom(old, c.id, left, right, other_edge(l, s));
+        return;
+      }
+      const std::uint32_t b = old.lo;
+      const bool b_right = right_of(s, b);
+      const std::uint32_t next_t = has_two(old.down) ? old.down[b_right ? 0 : 1] : old.down[0];
+      const Trapezoid next = z(next_t);
+      const std::uint32_t down_other = other(old.down, next_t), up_other = other(next.up, c.id);
+      if (b_right) {
+        z(right).lo = b;
+        const std::uint32_t below = allocate({b, kNone, s, next.right, pair_of(right, up_other), {kNone, kNone}});
+        z(right).down = pair_of(below, down_other);
+        if (down_other != kNone) replace(z(down_other).up, c.id, right);
+        if (up_other != kNone) replace(z(up_other).down, next_t, below);
+        right = below;
+      } else {
+        z(left).lo = b;
+        const std::uint32_t below = allocate({b, kNone, next.left, s, pair_of(up_other, left), {kNone, kNone}});
+        z(left).down = pair_of(down_other, below);
+        if (down_other != kNone) replace(z(down_other).up, c.id, left);
+        if (up_other != kNone) replace(z(up_other).down, next_t, below);
+        left = below;
+      }
+      c = {next, next_t, next_t};
+    }
+  }
+
+  // The polygon's other edge at vertex v, an endpoint of edge s.
+  std::uint32_t other_edge(std::uint32_t v, std::uint32_t s) const { return s == v ? (v == 0 ? n_ - 1 : v - 1) : v; }
+
+  // The neighbours above the first trapezoid t, which s splits from its top vertex hi: a side
+  // starting at hi (it can only be `adjacent`, the polygon's other edge there) leaves the piece on
+  // that side with no top edge; else the cut at hi is split at hi.
+  void link_top(const Trapezoid& old, std::uint32_t t, std::uint32_t left, std::uint32_t right,
+                std::uint32_t adjacent) {
+    if (old.left == adjacent) {
+      give_up(old.up, t, right);
+    } else if (old.right == adjacent) {
+      give_up(old.up, t, left);
+    } else if (has_two(old.up)) {
+      z(left).up = {old.up[0], kNone};
+      z(right).up = {old.up[1], kNone};
+      replace(z(old.up[0]).down, t, left);
+      replace(z(old.up[1]).down, t, right);
+    } else {
+      z(left).up = z(right).up = {old.up[0], kNone};
+      z(old.up[0]).down = {left, right};
+    }
+  }
+
+  void link_bottom(const Trapezoid& old, std::uint32_t t, std::uint32_t left, std::uint32_t right,
+                   std::uint32_t adjacent) {
+    if (old.left == adjacent) {
+      give_down(old.down, t, right);
+    } else if (old.right == adjacent) {
+      give_down(old.down, t, left);
+    } else if (has_two(old.down)) {
+      z(left).down = {old.down[0], kNone};
+      z(right).down = {old.down[1], kNone};
+      replace(z(old.down[0]).up, t, left);
+      replace(z(old.down[1]).up, t, right);
+    } else {
+      z(left).down = z(right).down = {old.down[0], kNone};
+      z(old.down[0]).up = {left, right};
+    }
+  }
+
+  void give_up(const Pair& up, std::uint32_t t, std::uint32_t piece) {
+    z(piece).up = up;
+    for (std::uint32_t x : up)
+      if (x != kNone) replace(z(x).down, t, piece);
+  }
+
+  void give_down(const Pair& down, std::uint32_t t, std::uint32_t piece) {
+    z(piece).down = down;
+    for (std::uint32_t x : down)
+      if (x != kNone) replace(z(x).up, t, piece);
+  }
+
+  // Step 2: each maximal run of edges not yet inserted starts at a vertex of an inserted edge. One
+  // search (from the run's old trapezoid) finds where the run starts; walking along each edge of the
+  // run finds where it ends, which is where the next one starts (its shared vertex is no point of the
+  // decomposition yet).
+  void trace_pending() {
+    for (std::uint32_t v = 0; v < n_; ++v) {
+      if (inserted(v) || !inserted(v == 0 ? n_ - 1 : v - 1)) continue;
+      std::uint32_t t = locate(at(v), at(next(v)), start_of(v, v));
+      for (std::uint32_t s = v; !inserted(s); s = next(s)) {
+        start_of(s, s) = t;
+        t = walk(s, t);
+        start_of(s, next(s)) = t;
+      }
+    }
+  }
+
+  // From trapezoid t holding the start of edge s (at vertex s), the trapezoid holding its end.
+  std::uint32_t walk(std::uint32_t s, std::uint32_t t) {
+    const Segment& e = segs_[s];
+    if (s == e.upper) {
+      for (std::uint32_t b; (b = z(t).lo) != kNone && above(at(b), e.bottom); ++trace_steps_)
+        t = has_two(z(t).down) ? z(t).down[right_of(s, b) ? 0 : 1] : z(t).down[0];
+    } else {
+      for (std::uint32_t b; (b = z(t).hi) != kNone && above(e.top, at(b)); ++trace_steps_)
+        t = has_two(z(t).up) ? z(t).up[right_of(s, b) ? 0 : 1] : z(t).up[0];
+    }
+    return t;
+  }
+
+  const Polygon& p_;
+  std::uint32_t n_;
+  std::vector<Segment> segs_;
+  std::vector<std::uint8_t> flags_;
+  std::vector<char> has_point_;
+  std::vector<Cell> cells_;
+  std::int64_t made_ = 0, search_steps_ = 0, trace_steps_ = 0, phases_ = 0;
+};
+
+Decomposition seidel(const Polygon& p, Counters& counters) {
+  Trapezoidation trapezoidation(p);
+  trapezoidation.build();
+  trapezoidation.count(counters);
+  return triangulate_monotone_pieces(p, trapezoidation.monotone_diagonals(), counters);
+}
+
+}  // namespace
+
+REGISTER_ALGORITHM(Algorithm{"seidel", Kind::Triangulation, false, false, "n*log*(n)", "== n-2",
+                             "Seidel 1991, randomized trapezoidation + monotone triangulation (slides 003 table)",
+                             1000000, seidel});
+
+}  // namespace pd
