@@ -7,12 +7,13 @@
 //
 // Repeat n-3 times: for each of the O(n^2) candidate segments v_i v_j not yet output, test it against
 // every edge and both neighbourhoods (O(n), diagonal_test.h) and against the diagonals already output
-// (O(n)); output a proper one. The slides leave open which proper diagonal to output; this one outputs
-// the shortest (ties by endpoints), so that every round really examines every candidate, as the
-// slides' count has it, and so that `diagonal-n3` can be checked against it: both build the greedy
-// triangulation. A maximal set of non-crossing diagonals triangulates the polygon, and with collinear
-// vertices too its faces are non-degenerate triangles (a face with more than three vertices still has
-// a diagonal), so n-3 rounds always find one.
+// (O(n)), each test in full, so that every round costs Theta(n^3); output a proper one. The slides
+// leave open which proper diagonal to output; this one outputs the shortest (ties by endpoints), so
+// that every round really examines every candidate, as the slides' count has it, and so that
+// `diagonal-n3` can be checked against it: both build the greedy triangulation. A maximal set of
+// non-crossing diagonals triangulates the polygon, and with collinear vertices too its faces are
+// non-degenerate triangles (a face with more than three vertices still has a diagonal), so n-3 rounds
+// always find one.
 #include "algorithms/diagonal_test.h"
 
 #include <optional>
@@ -53,14 +54,13 @@ class RepeatedDiagonalSearch {
     return best;
   }
 
+  // In full, like the diagonal test: against every diagonal already output as well.
   bool proper(const Cut& c, const std::vector<Cut>& chosen) {
     ++diagonal_tests_;
-    if (!is_diagonal(p_, c.a, c.b, edge_tests_)) return false;
-    for (const Cut& t : chosen) {
-      ++crossing_tests_;
-      if (cross(p_, c, t)) return false;
-    }
-    return true;
+    bool crosses_one = false;
+    for (const Cut& t : chosen) crosses_one |= cross(p_, c, t);
+    crossing_tests_ += static_cast<std::int64_t>(chosen.size());
+    return is_diagonal(p_, c.a, c.b, edge_tests_) && !crosses_one;
   }
 
   const Polygon& p_;

@@ -41,16 +41,20 @@ inline bool segments_meet(const Point& a, const Point& b, const Point& c, const 
          (cdb == 0 && within(c, d, b));
 }
 
-// Whether v_i v_j (non-adjacent) is a diagonal of p; counts the edges it is tested against.
+// Whether v_i v_j (non-adjacent) is a diagonal of p; counts the edges it is tested against. The test
+// is carried out in full, every edge and both neighbourhoods, as the slides count it (Theta(n) per
+// candidate). Stopping at the first crossing edge would tie the cost to how many candidates are
+// diagonals, which at a fixed number of notches grows from about n to about n^2/2 with n, so that at
+// the sizes these programs can run at they would seem to grow faster than their bounds.
 inline bool is_diagonal(const Polygon& p, std::size_t i, std::size_t j, std::int64_t& edge_tests) {
-  if (!in_cone(p, i, p[j]) || !in_cone(p, j, p[i])) return false;
+  bool meets_an_edge = false;
   for (std::size_t k = 0; k < p.size(); ++k) {
     const std::size_t l = p.next(k);
     if (k == i || k == j || l == i || l == j) continue;
     ++edge_tests;
-    if (segments_meet(p[i], p[j], p[k], p[l])) return false;
+    meets_an_edge |= segments_meet(p[i], p[j], p[k], p[l]);
   }
-  return true;
+  return !meets_an_edge && in_cone(p, i, p[j]) && in_cone(p, j, p[i]);
 }
 
 // Two distinct diagonals cross unless they share an endpoint (then they cannot overlap: neither has

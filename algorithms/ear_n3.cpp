@@ -5,10 +5,10 @@
 // Time O(n^3), space O(n). Pre: a simple counter-clockwise polygon; collinear (180-degree) vertices are
 // allowed. Output: n-3 diagonals, n-2 non-degenerate triangles, no Steiner points.
 //
-// Each round tests every remaining vertex afresh (O(m) ear tests of O(m) point tests for m remaining
+// Each round tests every remaining vertex afresh (m ear tests of m-3 point tests each for m remaining
 // vertices), clips the first ear after the last clipped vertex and outputs its diagonal; nothing is
 // remembered from one round to the next, which is what ear-n2 improves on. So every round costs
-// Theta(m^2) and the total is Theta(n^3) on every polygon, convex ones included.
+// Theta(m^2) and the total is Theta(n^3) on every polygon.
 //
 // A vertex b with neighbours a, c is an ear tip when it is strictly convex and no other remaining vertex
 // lies in the closed triangle abc: then ac is a diagonal (an edge crossing ac would have to end inside
@@ -53,18 +53,21 @@ class FreshEarClipper {
     for (std::size_t k = 0; k < remaining; ++k, v = next_[v]) ear_[v] = is_ear(v, start, remaining);
   }
 
+  // In full: every other remaining vertex is tested, whatever the angle at b and whatever an earlier
+  // vertex showed, so that each ear test costs Theta(m) as the slides count it (a reflex tip would
+  // otherwise cost O(1), and a polygon of notches would be cleared in O(n^2)).
   bool is_ear(std::size_t b, std::size_t start, std::size_t remaining) {
     ++ear_tests_;
     const std::size_t a = prev_[b], c = next_[b];
-    if (orient(p_[a], p_[b], p_[c]) <= 0) return false;
+    bool holds_a_vertex = false;
     std::size_t v = start;
     for (std::size_t k = 0; k < remaining; ++k, v = next_[v]) {
       if (v == a || v == b || v == c) continue;
       ++point_tests_;
-      if (orient(p_[a], p_[b], p_[v]) >= 0 && orient(p_[b], p_[c], p_[v]) >= 0 && orient(p_[c], p_[a], p_[v]) >= 0)
-        return false;
+      holds_a_vertex |= orient(p_[a], p_[b], p_[v]) >= 0 && orient(p_[b], p_[c], p_[v]) >= 0 &&
+                        orient(p_[c], p_[a], p_[v]) >= 0;
     }
-    return true;
+    return !holds_a_vertex && orient(p_[a], p_[b], p_[c]) > 0;
   }
 
   void unlink(std::size_t b) {

@@ -100,7 +100,8 @@ class SplitMix {
 class Trapezoidation {
  public:
   explicit Trapezoidation(const Polygon& p)
-      : p_(p), n_(static_cast<std::uint32_t>(p.size())), segs_(n_), flags_(n_, 0), has_point_(n_, 0) {
+      : p_(p), n_(static_cast<std::uint32_t>(p.size())), segs_(n_), flags_(n_, 0), point_phase_(n_, 0),
+        point_node_(n_, 0) {
     for (std::uint32_t s = 0; s < n_; ++s) {
       const std::uint32_t t = next(s);
       const bool down = above(p_[s], p_[t]);
@@ -151,6 +152,11 @@ class Trapezoidation {
   bool right_of(std::uint32_t s, std::uint32_t q) const { return orient(segs_[s].top, segs_[s].bottom, at(q)) > 0; }
 
   bool inserted(std::uint32_t s) const { return flags_[s] & kInserted; }
+  bool has_point(std::uint32_t v) const { return point_phase_[v] != 0; }
+  void mark_point(std::uint32_t v, std::uint32_t node) {
+    point_phase_[v] = static_cast<std::uint8_t>(phases_ + 1);
+    point_node_[v] = node;
+  }
   // The polygon lies right of its downward edges (counter-clockwise order).
   bool inside(const Trapezoid& t) const { return t.left != kNone && (flags_[t.left] & kDescends); }
   // Side s (edge s -> s+1) runs from the trapezoid's top vertex to its bottom vertex.
@@ -228,7 +234,7 @@ class Trapezoidation {
     const std::uint32_t u = upper(s);
     const std::uint32_t t = locate(segs_[s].top, segs_[s].bottom, start_of(s, u));
     Crossed first{z(t), t, t};
-    if (!has_point_[u]) first = cut_keeping_above(first, u, segs_[s].top);
+    if (!has_point(u)) first = cut_keeping_above(first, u, segs_[s].top);
     thread(s, first);
     flags_[s] |= kInserted;
   }
@@ -255,7 +261,7 @@ class Trapezoidation {
     for (std::uint32_t x : top.up)
       if (x != kNone) replace(z(x).down, c.id, a);
     make_point_node(c.node, q, a, below);
-    has_point_[v] = 1;
+    mark_point(v, c.node);
     c.z.hi = v;
     c.z.up = {a, kNone};
     c.node = below;
@@ -270,7 +276,7 @@ class Trapezoidation {
     for (std::uint32_t x : bottom.down)
       if (x != kNone) replace(z(x).up, c.id, b);
     make_point_node(c.node, q, above_v, b);
-    has_point_[v] = 1;
+    mark_point(v, c.node);
     c.z.lo = v;
     c.z.down = {b, kNone};
     c.node = above_v;
@@ -286,7 +292,7 @@ class Trapezoidation {
     const Point& bottom = segs_[s].bottom;
     std::uint32_t left = kNone, right = kNone;
     for (;;) {
-      if (!has_point_[l] && (c.z.lo == kNone || above(bottom, at(c.z.lo)))) c = cut_keeping_below(c, l, bottom);
+      if (!has_point(l) && (c.z.lo == kNone || above(bottom, at(c.z.lo)))) c = cut_keeping_below(c, l, bottom);
       const Trapezoid& old = c.z;
       if (left == kNone) {
         left = allocate({old.hi, kNone, old.left, s, {kNone, kNone}, {kNone, kNone}});
@@ -382,13 +388,20 @@ class Trapezoidation {
   void trace_pending() {
     for (std::uint32_t v = 0; v < n_; ++v) {
       if (inserted(v) || !inserted(v == 0 ? n_ - 1 : v - 1)) continue;
-      std::uint32_t t = locate(at(v), at(next(v)), start_of(v, v));
+      std::uint32_t t = locate(at(v), at(next(v)), run_search_start(v));
       for (std::uint32_t s = v; !inserted(s); s = next(s)) {
         start_of(s, s) = t;
         t = walk(s, t);
         start_of(s, next(s)) = t;
       }
     }
+  }
+
+  // Where to search for the start of a run at vertex v: v's own point node if v became a point in
+  // this phase (its subtree covers all of v's surroundings and only this phase's changes lie below
+  // it), else where the last tracing found the run's first edge.
+  std::uint32_t run_search_start(std::uint32_t v) {
+    return point_phase_[v] == phases_ + 1 ? point_node_[v] : start_of(v, v);
   }
 
   // From trapezoid t holding the start of edge s (at vertex s), the trapezoid holding its end.
@@ -408,7 +421,8 @@ class Trapezoidation {
   std::uint32_t n_;
   std::vector<Segment> segs_;
   std::vector<std::uint8_t> flags_;
-  std::vector<char> has_point_;
+  std::vector<std::uint8_t> point_phase_;  // 1 + the phase in which the vertex became a point; 0: not yet
+  std::vector<std::uint32_t> point_node_;  // the point node of its cut
   std::vector<Cell> cells_;
   std::int64_t made_ = 0, search_steps_ = 0, trace_steps_ = 0, phases_ = 0;
 };

@@ -33,10 +33,12 @@ TEST(Registry, HoldsEveryLandedAlgorithm) {
   std::set<std::string> names;
   for (const Algorithm& a : algorithms()) names.insert(a.name);
   const std::set<std::string> expected = {
-      "cgal-cdt",       "cgal-greene", "cgal-hertel-mehlhorn", "cgal-optimal", "cgal-y-monotone",
-      "cutting-convex", "cutting-tri", "diagonal-n3",  "diagonal-n4",     "ear-n2",
-      "ear-n3",         "greene-sweep", "hertel-mehlhorn", "monotone",   "naive",
-      "naive-chains",   "seidel",      "y-monotone"};
+      "cgal-cdt",       "cgal-greene",    "cgal-hertel-mehlhorn", "cgal-optimal",
+      "cgal-y-monotone", "cutting-convex", "cutting-tri",          "diagonal-n3",
+      "diagonal-n4",    "ear-n2",         "ear-n3",               "greene-dp",
+      "greene-sweep",   "hertel-mehlhorn", "keil",                "keil-snoeyink",
+      "keil-snoeyink-reduced", "min-ink",  "monotone",            "naive",
+      "naive-chains",   "seidel",         "y-monotone"};
   EXPECT_EQ(names, expected);
 }
 

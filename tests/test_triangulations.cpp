@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -207,7 +208,6 @@ TEST(DiagonalBased, ImprovedVersionOutputsTheSameDiagonals) {
       EXPECT_EQ(d3.cuts[k].a, d4.cuts[k].a) << describe(*ring);
       EXPECT_EQ(d3.cuts[k].b, d4.cuts[k].b) << describe(*ring);
     }
-    EXPECT_GE(c4.at("edge_tests"), c3.at("edge_tests"));  // n-3 rounds of what diagonal-n3 does once
   }
 }
 
@@ -232,6 +232,22 @@ TEST(EarN3, TestsEveryRemainingVertexEveryRound) {
   find_algorithm("ear-n3")->run(p, counters);
   EXPECT_EQ(counters.at("rounds"), 7);
   EXPECT_EQ(counters.at("ear_tests"), 10 + 9 + 8 + 7 + 6 + 5 + 4);
+  EXPECT_EQ(counters.at("point_tests"), 10 * 7 + 9 * 6 + 8 * 5 + 7 * 4 + 6 * 3 + 5 * 2 + 4 * 1);
+}
+
+// Both diagonal-based programs test every candidate in full: against every edge not at its ends.
+TEST(DiagonalBased, TestEveryCandidateAgainstEveryEdge) {
+  const Polygon p = Polygon::make({{0, 0}, {4, 0}, {4, 4}, {3, 4}, {2, 2}, {1, 4}, {0, 4}, {1, 2}});
+  const std::int64_t candidates = 8 * 5 / 2, edges = 8 - 4;
+  Counters c3, c4;
+  find_algorithm("diagonal-n3")->run(p, c3);
+  find_algorithm("diagonal-n4")->run(p, c4);
+  EXPECT_EQ(c3.at("diagonal_tests"), candidates);
+  EXPECT_EQ(c3.at("edge_tests"), candidates * edges);
+  // Round k tests the candidates not yet output: 20, 19, ..., 16 over the n-3 = 5 rounds.
+  EXPECT_EQ(c4.at("diagonal_tests"), 20 + 19 + 18 + 17 + 16);
+  EXPECT_EQ(c4.at("edge_tests"), (20 + 19 + 18 + 17 + 16) * edges);
+  EXPECT_EQ(c4.at("crossing_tests"), 19 * 1 + 18 * 2 + 17 * 3 + 16 * 4);
 }
 
 // Seidel's insertion order is random but fixed: the same polygon gives the same diagonals. There are
