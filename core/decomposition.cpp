@@ -95,17 +95,22 @@ struct Rotation {
   }
 };
 
-std::vector<std::size_t> twins(const std::vector<VertexId>& origin, const std::vector<VertexId>& target) {
-  std::vector<std::size_t> order(origin.size());
-  std::iota(order.begin(), order.end(), 0);
-  auto key = [&](std::size_t h) { return std::make_pair(origin[h], target[h]); };
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
-  std::vector<std::size_t> twin(origin.size());
-  for (std::size_t h = 0; h < origin.size(); ++h) {
-    const auto reversed = std::make_pair(target[h], origin[h]);
-    twin[h] = *std::lower_bound(order.begin(), order.end(), reversed,
-                                [&](std::size_t a, const std::pair<VertexId, VertexId>& k) { return key(a) < k; });
-  }
+// The twin of every half-edge. Each vertex's row is sorted by target once, so finding v->u in v's row
+// is a binary search: O(m log d) in all, with d the largest degree (a fan does not make it quadratic).
+std::vector<std::size_t> twins(const std::vector<std::size_t>& start, const std::vector<VertexId>& target) {
+  std::vector<std::pair<VertexId, std::size_t>> by_target(target.size());
+  for (std::size_t h = 0; h < target.size(); ++h) by_target[h] = {target[h], h};
+  for (std::size_t v = 0; v + 1 < start.size(); ++v)
+    std::sort(by_target.begin() + static_cast<std::ptrdiff_t>(start[v]),
+              by_target.begin() + static_cast<std::ptrdiff_t>(start[v + 1]));
+  std::vector<std::size_t> twin(target.size());
+  for (std::size_t v = 0; v + 1 < start.size(); ++v)
+    for (std::size_t h = start[v]; h < start[v + 1]; ++h) {
+      const VertexId u = target[h];
+      const auto first = by_target.begin() + static_cast<std::ptrdiff_t>(start[u]);
+      const auto last = by_target.begin() + static_cast<std::ptrdiff_t>(start[u + 1]);
+      twin[h] = std::lower_bound(first, last, std::make_pair(static_cast<VertexId>(v), std::size_t(0)))->second;
+    }
   return twin;
 }
 
@@ -131,7 +136,7 @@ Rotation sorted_rotation(const std::vector<P>& pts, const std::vector<HalfEdge>&
     std::fill(rot.origin.begin() + rot.start[v], rot.origin.begin() + rot.start[v + 1],
               static_cast<VertexId>(v));
   }
-  rot.twin = twins(rot.origin, rot.target);
+  rot.twin = twins(rot.start, rot.target);
   return rot;
 }
 

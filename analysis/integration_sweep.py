@@ -1,0 +1,155 @@
+#!/usr/bin/python3
+"""End-to-end checks of the sweep driver against the real polydecomp-bench (a ctest entry; needs a build):
+
+  - killing a sweep in the middle and running the same command again loses no finished key, runs no
+    finished key again, and ends with the same keys and piece counts as an uninterrupted run;
+  - two shards merged with merge.py equal one unsharded run in keys, statuses and piece counts.
+
+usage: integration_sweep.py --build DIR
+"""
+
+import argparse
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import results  # noqa: E402
+
+BUILD = None
+
+# Three algorithms on two families, small polygons: about 50 keys, each a few milliseconds long.
+TINY_SWEEPS = {
+    "tiny": {
+        "description": "integration test",
+        "algorithms": ["ear-n2", "hertel-mehlhorn", "naive"],
+        "seeds": [1, 2],
+        "min_time": 0.005,
+        "budget_seconds": 5,
+        "timeout_seconds": 60,
+        "curves": [
+            {"vs": "n", "families": ["random", "comb"], "r": ["default"], "n": [20, 40, 80, 160]},
+            {"vs": "r", "families": ["random"], "n": [64], "r": [0, "n/8", "n/4"]},
+        ],
+    }
+}
+
+
+def sweep_command(workdir, *extra):
+    return [sys.executable, os.path.join(HERE, "sweep.py"), "--sweep", "tiny", "--sweeps",
+            os.path.join(workdir, "sweeps.json"), "--build", BUILD, "--results", os.path.join(workdir, "results"),
+            "--no-analysis", *extra]
+
+
+def pieces_by_key(path):
+    with open(path, encoding="utf-8") as f:
+        runs = json.load(f)["benchmarks"]
+    return {run["name"]: (run.get("status"), run.get("pieces")) for run in runs}
+
+
+def finished_lines(journal):
+    """The journal's finished-key lines, verbatim, by key name."""
+    lines = {}
+    with open(journal, encoding="utf-8") as f:
+        for line in f:
+            obj = json.loads(line)
+            if "name" in obj:
+                lines.setdefault(obj["name"], []).append(line)
+    return lines
+
+
+class SweepIntegration(unittest.TestCase):
+    def setUp(self):
+        self.root = tempfile.mkdtemp(prefix="pd-sweep-")
+
+    def tearDown(self):
+        shutil.rmtree(self.root)
+
+    def workdir(self, name):
+        path = os.path.join(self.root, name)
+        os.makedirs(os.path.join(path, "results"))
+        with open(os.path.join(path, "sweeps.json"), "w", encoding="utf-8") as f:
+            json.dump(TINY_SWEEPS, f)
+        return path
+
+    def run_sweep(self, workdir, *extra):
+        done = subprocess.run(sweep_command(workdir, *extra), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                              text=True, check=False)
+        self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+
+    def reference(self):
+        whole = self.workdir("whole")
+        self.run_sweep(whole)
+        keys = pieces_by_key(os.path.join(whole, "results", "tiny.json"))
+        self.assertGreater(len(keys), 40)
+        self.assertTrue(all(status == "ok" for status, _ in keys.values()), keys)
+        return keys
+
+    def test_killed_sweep_resumes_without_losing_or_rerunning_keys(self):
+        expected = self.reference()
+        killed = self.workdir("killed")
+        journal = os.path.join(killed, "results", "tiny.journal.jsonl")
+        process = subprocess.Popen(sweep_command(killed), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                   start_new_session=True)
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline and len(self._finished(journal)) < 10:
+            time.sleep(0.05)
+        os.killpg(process.pid, signal.SIGKILL)
+        process.wait()
+        before = finished_lines(journal)
+        self.assertGreaterEqual(len(before), 10)
+        self.assertLess(len(before), len(expected), "the sweep ended before it could be killed")
+
+        self.run_sweep(killed)
+        after = finished_lines(journal)
+        for name, lines in before.items():
+            self.assertEqual(after[name], lines, "{} ran again after the resume".format(name))
+        resumed = pieces_by_key(os.path.join(killed, "results", "tiny.json"))
+        self.assertEqual(resumed, expected)
+
+    def test_two_shards_merged_equal_one_run(self):
+        expected = self.reference()
+        sharded = self.workdir("sharded")
+        self.run_sweep(sharded, "--shard", "1/2")
+        self.run_sweep(sharded, "--shard", "2/2")
+        first = pieces_by_key(os.path.join(sharded, "results", "tiny.shard-1-of-2.json"))
+        second = pieces_by_key(os.path.join(sharded, "results", "tiny.shard-2-of-2.json"))
+        self.assertTrue(first and second)
+        self.assertFalse(set(first) & set(second), "a key ran in both shards")
+        merge = subprocess.run([sys.executable, os.path.join(HERE, "merge.py"), "--sweep", "tiny", "--results",
+                                os.path.join(sharded, "results")], stderr=subprocess.PIPE, text=True, check=False)
+        self.assertEqual(merge.returncode, 0, merge.stderr)
+        merged_path = os.path.join(sharded, "results", "tiny.json")
+        self.assertEqual(pieces_by_key(merged_path), expected)
+        with open(merged_path, encoding="utf-8") as f:
+            names = [run["name"] for run in json.load(f)["benchmarks"]]
+        with open(os.path.join(self.root, "whole", "results", "tiny.json"), encoding="utf-8") as f:
+            self.assertEqual(names, [run["name"] for run in json.load(f)["benchmarks"]], "keys out of sweep order")
+
+    @staticmethod
+    def _finished(journal):
+        if not os.path.exists(journal):
+            return {}
+        _, runs, _ = results.read_journal(journal)
+        return runs
+
+
+def main():
+    global BUILD
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--build", required=True, help="the build directory holding polydecomp-bench")
+    args, rest = parser.parse_known_args()
+    BUILD = os.path.abspath(args.build)
+    unittest.main(argv=[sys.argv[0]] + rest)
+
+
+if __name__ == "__main__":
+    main()
