@@ -293,7 +293,8 @@ TEST(Naive, CompletesAPartialDecomposition) {
 }
 
 // Hertel-Mehlhorn and the sweep built on it: valid, every diagonal essential (removing any one leaves
-// a piece that is not convex), hence at most 2r + 1 pieces.
+// a piece that is not convex), hence at most 2r + 1 pieces, and at most 4 OPT (OPT from keil-snoeyink,
+// whose agreement with a brute force is tested in test_optimal.cpp) where OPT is cheap to compute.
 class DiagonalRemoval : public ::testing::TestWithParam<std::string> {};
 
 void expect_all_essential(const Algorithm& a, const Polygon& p, const std::string& label) {
@@ -302,6 +303,11 @@ void expect_all_essential(const Algorithm& a, const Polygon& p, const std::strin
   const Validation v = validate(p, d, Kind::Convex, false);
   ASSERT_TRUE(v.ok) << label << ": " << v.reason;
   EXPECT_LE(d.cuts.size(), 2 * p.reflex_count()) << label;
+  if (p.size() <= 250) {
+    Counters unused;
+    const std::size_t optimum = algorithm("keil-snoeyink").run(p, unused).cuts.size() + 1;
+    EXPECT_LE(d.cuts.size() + 1, 4 * optimum) << label;
+  }
   EXPECT_EQ(counters["diagonals_removed"] + static_cast<std::int64_t>(d.cuts.size()), counters["diagonals"]) << label;
   for (std::size_t k = 0; k < d.cuts.size() && p.size() <= 250; ++k) {
     Decomposition fewer = d;
