@@ -52,24 +52,23 @@ class Rotation {
 
  private:
   // Each diagonal's two half-edges go into the middle of their rows, which are then sorted by angle.
+  // A half-edge remembers its diagonal end as 2k (at end a of diagonal k) or 2k+1 (at end b), so that
+  // pairing the twins reads no diagonal again.
   void place_diagonals(const std::vector<Cut>& diagonals) {
     const std::size_t n = p_.size();
-    std::vector<std::uint32_t> fill(n), diagonal_of(target_.size());
+    std::vector<std::uint32_t> fill(n), end_of(target_.size());
     for (std::size_t v = 0; v < n; ++v) fill[v] = start_[v] + 1;
     for (std::uint32_t k = 0; k < diagonals.size(); ++k) {
       const Cut& c = diagonals[k];
-      target_[fill[c.a]] = c.b, diagonal_of[fill[c.a]++] = k;
-      target_[fill[c.b]] = c.a, diagonal_of[fill[c.b]++] = k;
+      target_[fill[c.a]] = c.b, end_of[fill[c.a]++] = 2 * k;
+      target_[fill[c.b]] = c.a, end_of[fill[c.b]++] = 2 * k + 1;
     }
     std::vector<std::uint32_t> slot(2 * diagonals.size());  // slot[2k]: at end a, slot[2k+1]: at end b
     std::vector<std::pair<std::uint32_t, std::uint32_t>> row;
     for (std::uint32_t v = 0; v < n; ++v) {
       const std::uint32_t begin = start_[v] + 1, end = last(v);
-      if (end - begin > 1) sort_row(v, begin, end, diagonal_of, row);
-      for (std::uint32_t h = begin; h < end; ++h) {
-        const std::uint32_t k = diagonal_of[h];
-        slot[2 * k + (diagonals[k].a == v ? 0 : 1)] = h;
-      }
+      if (end - begin > 1) sort_row(v, begin, end, end_of, row);
+      for (std::uint32_t h = begin; h < end; ++h) slot[end_of[h]] = h;
     }
     for (std::uint32_t k = 0; k < diagonals.size(); ++k) {
       twin_[slot[2 * k]] = slot[2 * k + 1];
@@ -79,17 +78,17 @@ class Rotation {
 
   // Counter-clockwise from v -> next(v): first the directions left of that ray, then the rest (a
   // reflex angle exceeds a half-turn). Every diagonal lies strictly inside the interior angle.
-  void sort_row(std::uint32_t v, std::uint32_t begin, std::uint32_t end, std::vector<std::uint32_t>& diagonal_of,
+  void sort_row(std::uint32_t v, std::uint32_t begin, std::uint32_t end, std::vector<std::uint32_t>& end_of,
                 std::vector<std::pair<std::uint32_t, std::uint32_t>>& row) {
     const Point &centre = p_[v], &ray = p_[p_.next(v)];
     auto half = [&](std::uint32_t w) { return orient(centre, ray, p_[w]) > 0 ? 0 : 1; };
     row.clear();
-    for (std::uint32_t h = begin; h < end; ++h) row.emplace_back(target_[h], diagonal_of[h]);
+    for (std::uint32_t h = begin; h < end; ++h) row.emplace_back(target_[h], end_of[h]);
     std::sort(row.begin(), row.end(), [&](const auto& a, const auto& b) {
       const int ha = half(a.first), hb = half(b.first);
       return ha != hb ? ha < hb : orient(centre, p_[a.first], p_[b.first]) > 0;
     });
-    for (std::uint32_t h = begin; h < end; ++h) std::tie(target_[h], diagonal_of[h]) = row[h - begin];
+    for (std::uint32_t h = begin; h < end; ++h) std::tie(target_[h], end_of[h]) = row[h - begin];
   }
 
   const Polygon& p_;

@@ -36,6 +36,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 namespace pd {
@@ -62,16 +63,24 @@ struct Trapezoid {
 // One record is both a trapezoid and, once the trapezoid is destroyed, the search-structure node that
 // replaced it, so that a search ends on the trapezoid itself and the nodes pointing at a destroyed
 // trapezoid need no update. A point node keeps its point and a segment node its endpoints (upper
-// first), so that a search step reads one record.
+// first), so that a search step reads one record. The search reads one cell per step at a random
+// address, so the record is kept at 40 bytes: the kind is folded into the child fields (a leaf has no
+// children; a segment node's right child carries kSegmentNode), which limits a decomposition to 2^31
+// cells, n < 3*10^8.
+constexpr std::uint32_t kSegmentNode = 0x80000000u;
+
 struct Cell {
-  enum Kind : std::uint8_t { Leaf, PointNode, SegmentNode };
-  Kind kind;
-  std::uint32_t first, second;  // point node: above, below; segment node: left, right
+  std::uint32_t first, second;  // point node: above, below; segment node: left, right | kSegmentNode
   union {
     Trapezoid z;
     double geo[4];
   };
+
+  bool is_leaf() const { return first == kNone; }
+  bool is_segment_node() const { return second & kSegmentNode; }
+  std::uint32_t right_child() const { return second & ~kSegmentNode; }
 };
+static_assert(sizeof(Cell) == 40, "a cell is a trapezoid and two child ids");
 
 // Segment s (polygon edge s -> s+1) with its endpoints in the sweep order.
 struct Segment {
@@ -108,7 +117,10 @@ class Trapezoidation {
       segs_[s] = down ? Segment{p_[s], p_[t], s, t, {0, 0}} : Segment{p_[t], p_[s], t, s, {0, 0}};
       if (down) flags_[s] = kDescends;
     }
-    cells_.reserve(6 * std::size_t{n_} + 16);  // about 5n trapezoids are made; growing would copy them
+    // About 5n trapezoids are made; growing would copy them.
+    const std::size_t capacity = 6 * std::size_t{n_} + 16;
+    if (capacity >= kSegmentNode) throw std::length_error("seidel: too many vertices for 31-bit cell ids");
+    cells_.reserve(capacity);
     allocate({kNone, kNone, kNone, kNone, {kNone, kNone}, {kNone, kNone}});  // the plane; cell 0 is the root
   }
 
@@ -127,7 +139,7 @@ class Trapezoidation {
   std::vector<Cut> monotone_diagonals() const {
     std::vector<Cut> diagonals;
     for (const Cell& c : cells_) {
-      if (c.kind != Cell::Leaf || !inside(c.z) || joins(c.z.left, c.z) || joins(c.z.right, c.z)) continue;
+      if (!c.is_leaf() || !inside(c.z) || joins(c.z.left, c.z) || joins(c.z.right, c.z)) continue;
       diagonals.push_back({c.z.hi, c.z.lo});
     }
     return diagonals;
@@ -183,7 +195,6 @@ class Trapezoidation {
 
   std::uint32_t allocate(const Trapezoid& t) {
     Cell c;
-    c.kind = Cell::Leaf;
     c.first = c.second = kNone;
     c.z = t;
     cells_.push_back(c);
@@ -193,7 +204,6 @@ class Trapezoidation {
 
   void make_point_node(std::uint32_t cell, const Point& q, std::uint32_t above_it, std::uint32_t below_it) {
     Cell& c = cells_[cell];
-    c.kind = Cell::PointNode;
     c.first = above_it;
     c.second = below_it;
     c.geo[0] = q.x();
@@ -202,9 +212,8 @@ class Trapezoidation {
 
   void make_segment_node(std::uint32_t cell, std::uint32_t s, std::uint32_t left, std::uint32_t right) {
     Cell& c = cells_[cell];
-    c.kind = Cell::SegmentNode;
     c.first = left;
-    c.second = right;
+    c.second = right | kSegmentNode;
     c.geo[0] = segs_[s].top.x();
     c.geo[1] = segs_[s].top.y();
     c.geo[2] = segs_[s].bottom.x();
@@ -217,14 +226,14 @@ class Trapezoidation {
     std::uint32_t cell = from;
     for (;; ++search_steps_) {
       const Cell& c = cells_[cell];
-      if (c.kind == Cell::Leaf) return cell;
-      if (c.kind == Cell::PointNode) {
+      if (c.is_leaf()) return cell;
+      if (!c.is_segment_node()) {
         const Point x(c.geo[0], c.geo[1]);
         cell = above(x == q ? toward : q, x) ? c.first : c.second;
       } else {
         const Point top(c.geo[0], c.geo[1]), bottom(c.geo[2], c.geo[3]);
         const Point& probe = (q == top || q == bottom) ? toward : q;
-        cell = orient(top, bottom, probe) > 0 ? c.second : c.first;
+        cell = orient(top, bottom, probe) > 0 ? c.right_child() : c.first;
       }
     }
   }
