@@ -104,7 +104,9 @@ class TimeRow:
                 check = CurveCheck(label, [p[:3] for p in points if label in p[3] or label == "all"], claim)
                 if not check.fit:
                     continue
-                if not label.startswith("vs-r"):
+                if check.verdict.startswith("inconclusive"):
+                    self.notes.append("{} {}".format(label, check.verdict))
+                elif not label.startswith("vs-r"):
                     self.checks.append(check)
                 elif check.verdict.startswith("CONTRADICTED"):
                     self.notes.append("{} grows faster in r than claimed: {}".format(

@@ -21,6 +21,7 @@ import math
 import numpy as np
 
 TOLERANCE = 0.15  # exponent excess tolerated beyond the confidence interval (cache and memory effects)
+MIN_SPAN = 4.0  # a contradiction needs the fitted sizes to span at least this factor (see verdict)
 SLOWER_MARGIN = 0.5  # an exponent this far under the claim is reported as "grows slower than claimed"
 
 # Two-sided 95% quantiles of Student's t for 1..30 degrees of freedom.
@@ -145,16 +146,27 @@ def directions(names):
     return [(names[0], {names[0]: 1.0})]
 
 
+def span(fit):
+    """The factor between the largest and smallest size the fit varies: n, or r for a fit along r."""
+    sizes = [p[1] if fit.names == ["b"] else p[0] for p in fit.points]
+    return max(sizes) / min(sizes)
+
+
 def verdict(fit, claimed):
-    """"consistent", "consistent (grows slower than claimed)" or "CONTRADICTED: fitted a=2.90 ± 0.10
-    vs claimed 2.00"."""
+    """"consistent", "consistent (grows slower than claimed)", "CONTRADICTED: fitted a=2.90 ± 0.10
+    vs claimed 2.00", or "inconclusive: ..." when the growth is over the claim but the sizes span less
+    than MIN_SPAN: an O() bound is asymptotic, and lower-order terms (an exact count such as (n-3)^4)
+    or a bound not yet tight at small sizes make the local slope steeper than the claim's over a
+    narrow range."""
     slower = True
     for label, weights in directions(fit.names):
         measured = fit.combination(weights)
         claim = sum(weights[k] * claimed[k] for k in weights)
         half = fit.half_width(weights)
         if measured - claim > half + TOLERANCE:
-            return "CONTRADICTED: fitted {}={:.2f} ± {:.2f} vs claimed {:.2f}".format(
-                label, measured, half, round(claim, 2) + 0.0)
+            text = "fitted {}={:.2f} ± {:.2f} vs claimed {:.2f}".format(label, measured, half, round(claim, 2) + 0.0)
+            if span(fit) < MIN_SPAN:
+                return "inconclusive: {} over sizes spanning only a factor {:.1f}".format(text, span(fit))
+            return "CONTRADICTED: " + text
         slower = slower and measured + half < claim - SLOWER_MARGIN
     return "consistent (grows slower than claimed)" if slower else "consistent"

@@ -70,6 +70,12 @@ class FitTest(unittest.TestCase):
         verdict = self.verdict(1, 2, "n*r", lambda n: [8, n // 8, n // 4])
         self.assertTrue(verdict.startswith("CONTRADICTED: fitted a+b=3.00"), verdict)
 
+    def test_a_narrow_range_is_inconclusive(self):
+        f = fit.fit_exponents(power_law(4.5, 0.0, [30, 40, 50, 60, 70, 80, 90, 100], lambda n: [0]))
+        text = fit.verdict(f, fit.claimed_exponents(f, bound_expr.parse_time_bound("n^4")))
+        self.assertTrue(text.startswith("inconclusive: fitted a=4.50"), text)
+        self.assertIn("spanning only a factor 1.4", text)  # the larger half: 70..100
+
     def test_growth_in_r_bounded_by_n_is_not_a_contradiction(self):
         # t = n^1.5 r^0.5 <= n^2 since r <= n: b > 0 alone must not contradict "n^2".
         self.assertTrue(self.verdict(1.5, 0.5, "n^2", lambda n: [8, n // 8, n // 4]).startswith("consistent"))
