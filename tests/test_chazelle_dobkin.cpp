@@ -1,0 +1,168 @@
+// Chazelle-Dobkin's pattern detection (algorithms/chazelle_dobkin_patterns.h) against the definitions:
+// X2 (Theorem 13) against the brute-force diagonal test and the range cones written out with input
+// predicates; X3 (Theorem 14) by building the pattern, finishing with the naive decomposition and
+// validating the result exactly (a found pattern must save one piece), and, where it reports no
+// pattern, by a grid of candidate Steiner points checked against the definition.
+#include "algorithms/chazelle_dobkin_patterns.h"
+#include "algorithms/naive.h"
+#include "core/validate.h"
+#include "generators/family.h"
+#include "tests/brute_force.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace pd {
+namespace {
+
+using ExactSegment = ExactKernel::Segment_2;
+
+struct Sample {
+  std::string family;
+  std::size_t n, r;
+  std::uint64_t seed;
+};
+
+std::vector<Sample> small_samples() {
+  std::vector<Sample> out;
+  for (std::uint64_t seed : {1, 2, 3}) {
+    out.push_back({"random", 14, 5, seed});
+    out.push_back({"random", 20, 7, seed});
+    out.push_back({"notch-heavy", 12, 8, seed});
+    out.push_back({"comb", 16, 6, seed});
+    out.push_back({"few-notches", 16, 6, seed});
+    out.push_back({"spiral", 16, 6, seed});
+  }
+  out.push_back({"x-pattern", 12, 3, 1});
+  out.push_back({"x-pattern", 22, 6, 1});
+  return out;
+}
+
+Polygon make(const Sample& s) { return Polygon::make(generate(s.family, s.n, s.r, s.seed)); }
+std::string label(const Sample& s) {
+  return s.family + " n=" + std::to_string(s.n) + " r=" + std::to_string(s.r) + " seed=" + std::to_string(s.seed);
+}
+
+// X lies in the closed range of notch v: the angles (v-1, v, X) and (X, v, v+1) are at most 180.
+bool in_closed_range(const Polygon& p, std::size_t v, const Point& x) {
+  return orient(p[p.prev(v)], p[v], x) >= 0 && orient(p[v], p[p.next(v)], x) >= 0;
+}
+
+TEST(ChazelleDobkinPatterns, X2IsADiagonalInBothRanges) {
+  for (const Sample& s : small_samples()) {
+    const Polygon p = make(s);
+    cd::Patterns patterns(p);
+    const auto& notches = patterns.notches();
+    for (std::size_t i = 0; i < notches.size(); ++i)
+      for (std::size_t j = 0; j < notches.size(); ++j) {
+        if (i == j) continue;
+        const VertexId a = notches[i], b = notches[j];
+        const bool expected = brute::is_diagonal(p, a, b) && in_closed_range(p, a, p[b]) && in_closed_range(p, b, p[a]);
+        EXPECT_EQ(patterns.x2(patterns.bare(i), patterns.bare(j)), expected) << label(s) << " notches " << a << ", " << b;
+      }
+  }
+}
+
+// Cuts from each of the three notches to s, then the naive decomposition for the other notches.
+Decomposition with_x3(const Polygon& p, const std::vector<VertexId>& notches, const std::array<std::size_t, 3>& triple,
+                      const QPoint& s, Counters& counters) {
+  Decomposition d;
+  const VertexId sid = static_cast<VertexId>(p.size() + d.add_steiner(s));
+  std::vector<VertexId> rest;
+  for (std::size_t k = 0; k < notches.size(); ++k) {
+    if (k == triple[0] || k == triple[1] || k == triple[2]) d.add_cut(notches[k], sid);
+    else rest.push_back(notches[k]);
+  }
+  return naive_complete(p, d, rest, counters);
+}
+
+TEST(ChazelleDobkinPatterns, XPatternTriangleHasItsX3AndNoX2) {
+  const Polygon p = Polygon::make(generate("x-pattern", 12, 3, 1));
+  cd::Patterns patterns(p);
+  ASSERT_EQ(patterns.notches().size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) {
+      if (i != j) EXPECT_FALSE(patterns.x2(patterns.bare(i), patterns.bare(j)));
+    }
+  }
+  const auto s = patterns.x3(patterns.bare(0), patterns.bare(1), patterns.bare(2));
+  ASSERT_TRUE(s.has_value());
+  Counters counters;
+  const Decomposition d = with_x3(p, patterns.notches(), {0, 1, 2}, *s, counters);
+  const Validation v = validate(p, d, Kind::Convex, true);
+  EXPECT_TRUE(v.ok) << v.reason;
+  EXPECT_EQ(pieces_of(p, d).size(), 3u);
+}
+
+// Every X3 found is a pattern: with it, the naive decomposition of the rest gives r pieces, valid.
+TEST(ChazelleDobkinPatterns, EveryX3FoundSavesOnePiece) {
+  std::size_t found = 0;
+  for (const Sample& s : small_samples()) {
+    const Polygon p = make(s);
+    cd::Patterns patterns(p);
+    const std::size_t r = patterns.notches().size();
+    for (std::size_t i = 0; i < r; ++i)
+      for (std::size_t j = i + 1; j < r; ++j)
+        for (std::size_t k = j + 1; k < r; ++k) {
+          const auto steiner = patterns.x3(patterns.bare(i), patterns.bare(j), patterns.bare(k));
+          if (!steiner) continue;
+          ++found;
+          Counters counters;
+          const Decomposition d = with_x3(p, patterns.notches(), {i, j, k}, *steiner, counters);
+          const Validation v = validate(p, d, Kind::Convex, true);
+          EXPECT_TRUE(v.ok) << label(s) << " triple " << i << "," << j << "," << k << ": " << v.reason;
+          EXPECT_EQ(pieces_of(p, d).size(), r) << label(s);
+        }
+  }
+  EXPECT_GT(found, 3u);
+}
+
+// The definition of an X3 Steiner point, written out apart from the detector: strictly inside the
+// triangle of its notches, strictly inside each notch's range, and each edge free of P's boundary.
+bool is_x3_steiner(const Polygon& p, const std::array<VertexId, 3>& v, const QPoint& s) {
+  std::array<QPoint, 3> q;
+  for (int k = 0; k < 3; ++k) q[k] = to_exact(p[v[k]]);
+  for (int k = 0; k < 3; ++k)
+    if (orient(q[k], q[(k + 1) % 3], s) <= 0) return false;
+  for (int k = 0; k < 3; ++k) {
+    const QPoint before = to_exact(p[p.prev(v[k])]), after = to_exact(p[p.next(v[k])]);
+    if (orient(before, q[k], s) <= 0 || orient(q[k], after, s) <= 0) return false;
+    const ExactSegment edge(q[k], s);
+    for (std::size_t e = 0; e < p.size(); ++e) {
+      if (e == v[k] || p.next(e) == v[k]) continue;
+      if (CGAL::do_intersect(edge, ExactSegment(to_exact(p[e]), to_exact(p[p.next(e)])))) return false;
+    }
+  }
+  return true;
+}
+
+// Where the detector finds no X3, no point of a grid over the triangle is an X3 Steiner point.
+TEST(ChazelleDobkinPatterns, NoX3MissedOnAGrid) {
+  constexpr int kGrid = 10;
+  for (const Sample& s : small_samples()) {
+    const Polygon p = make(s);
+    cd::Patterns patterns(p);
+    const auto& notches = patterns.notches();
+    const std::size_t r = notches.size();
+    for (std::size_t i = 0; i < r; ++i)
+      for (std::size_t j = i + 1; j < r; ++j)
+        for (std::size_t k = j + 1; k < r; ++k) {
+          if (patterns.x3(patterns.bare(i), patterns.bare(j), patterns.bare(k))) continue;
+          const std::array<VertexId, 3> v{notches[i], notches[j], notches[k]};
+          if (orient(p[v[0]], p[v[1]], p[v[2]]) <= 0) continue;
+          // Barycentric grid points (a, b, c) / kGrid, all strictly positive.
+          for (int a = 1; a < kGrid; ++a)
+            for (int b = 1; a + b < kGrid; ++b) {
+              const int c = kGrid - a - b;
+              const QPoint x((a * to_exact(p[v[0]]).x() + b * to_exact(p[v[1]]).x() + c * to_exact(p[v[2]]).x()) / kGrid,
+                             (a * to_exact(p[v[0]]).y() + b * to_exact(p[v[1]]).y() + c * to_exact(p[v[2]]).y()) / kGrid);
+              EXPECT_FALSE(is_x3_steiner(p, v, x)) << label(s) << " triple " << i << "," << j << "," << k;
+            }
+        }
+  }
+}
+
+}  // namespace
+}  // namespace pd
