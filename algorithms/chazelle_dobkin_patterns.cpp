@@ -65,16 +65,25 @@ bool turns_before(const Vec& reference, const Vec& d1, const Vec& d2) {
   return cross(d1, d2) > 0;
 }
 
-// The open cone of directions that resolve what is left of the angle at an adapted notch, as its two
-// bounding directions (lower, upper) in counter-clockwise order: the extensions of the arms beyond the
-// notch while the angle left is reflex, the arms themselves once it is not.
-struct Cone {
-  Vec lower, upper;
-};
-Cone cone_of(const QPoint& v, const AdaptedNotch& a) {
-  const Vec f = a.forward - v, b = a.backward - v;
-  if (cross(f, b) < 0) return {-b, -f};
-  return {f, b};
+// 2v - w: the point such that v lies halfway between it and w (the extension of wv beyond v).
+QPoint mirrored(const QPoint& v, const QPoint& w) { return QPoint(2 * v.x() - w.x(), 2 * v.y() - w.y()); }
+
+QPoint average(const std::vector<QPoint>& points) {
+  Rational sx = 0, sy = 0;
+  for (const QPoint& q : points) sx += q.x(), sy += q.y();
+  const Rational k = static_cast<int>(points.size());
+  return QPoint(sx / k, sy / k);
+}
+
+// The Steiner point's angle at the tip of a pair of notch edges: whether the edge from tip to
+// `other` splits the angle on the side away from the pocket of a and b into two angles of at most
+// 180 degrees, i.e. lies in the closed cone between the extensions of a->tip and b->tip.
+bool splits_reflex_side(const QPoint& a, const QPoint& b, const QPoint& tip, const QPoint& other) {
+  const Vec u = tip - a, w = tip - b, d = other - tip;
+  const Rational uw = cross(u, w);
+  if (uw == 0) return orient(a, b, other) >= 0;
+  const int s = uw > 0 ? 1 : -1;
+  return s * cross(u, d) >= 0 && s * cross(d, w) >= 0;
 }
 
 }  // namespace
@@ -87,6 +96,8 @@ Patterns::Patterns(const Polygon& p) : p_(p) {
   const std::size_t r = notches_.size();
   sees_notch_.assign(r * r, 0);
   transition_.assign(r * r, 0);
+  tip_known_.assign(r * r, 0);
+  tip_.assign(r * r, std::nullopt);
   if (r == 0) return;
   const VisibilityGraph visibility(p);
   std::vector<std::uint32_t> visible;
@@ -129,59 +140,150 @@ AdaptedNotch Patterns::bare(std::size_t notch) const {
   return {notch, at(static_cast<VertexId>(p_.next(v))), at(static_cast<VertexId>(p_.prev(v)))};
 }
 
+Joint Patterns::joint(const AdaptedNotch& a) const {
+  const QPoint& v = notch_point(a.notch);
+  if (cross(a.forward - v, a.backward - v) < 0) return {a.notch, mirrored(v, a.backward), mirrored(v, a.forward)};
+  return {a.notch, a.forward, a.backward};
+}
+
+Joint Patterns::forward_branch(std::size_t notch) const {
+  const VertexId v = notches_[notch];
+  return {notch, at(static_cast<VertexId>(p_.next(v))), mirrored(at(v), at(static_cast<VertexId>(p_.prev(v))))};
+}
+
+Joint Patterns::backward_branch(std::size_t notch) const {
+  const VertexId v = notches_[notch];
+  return {notch, mirrored(at(v), at(static_cast<VertexId>(p_.next(v)))), at(static_cast<VertexId>(p_.prev(v)))};
+}
+
+// The closed cone at an adapted notch: 180-degree angles allowed, the arms themselves not.
+bool Patterns::resolves(const AdaptedNotch& n, const QPoint& towards) const {
+  const QPoint& v = notch_point(n.notch);
+  const Vec d = towards - v, f = n.forward - v, b = n.backward - v;
+  const Rational cf = cross(f, d), cb = cross(d, b);
+  return (cf > 0 || (cf == 0 && dot(f, d) < 0)) && (cb > 0 || (cb == 0 && dot(d, b) < 0));
+}
+
 bool Patterns::x2(const AdaptedNotch& a, const AdaptedNotch& b) {
   ++x2_tests_;
-  const std::size_t r = notches_.size();
-  if (!sees_notch_[a.notch * r + b.notch]) return false;
-  // The closed cone at an adapted notch: 180-degree angles allowed, the arms themselves not.
-  auto resolves = [](const QPoint& v, const AdaptedNotch& n, const QPoint& towards) {
-    const Vec d = towards - v, f = n.forward - v, b = n.backward - v;
-    const Rational cf = cross(f, d), cb = cross(d, b);
-    return (cf > 0 || (cf == 0 && dot(f, d) < 0)) && (cb > 0 || (cb == 0 && dot(d, b) < 0));
-  };
-  const QPoint& va = at(notches_[a.notch]);
-  const QPoint& vb = at(notches_[b.notch]);
-  const bool found = resolves(va, a, vb) && resolves(vb, b, va);
+  const bool found = diagonal(a.notch, b.notch) && resolves(a, notch_point(b.notch)) && resolves(b, notch_point(a.notch));
   x2_found_ += found;
   return found;
 }
 
-std::optional<QPoint> Patterns::x3(const AdaptedNotch& a, const AdaptedNotch& b, const AdaptedNotch& c) {
-  ++x3_tests_;
-  const std::array<const AdaptedNotch*, 3> tri{&a, &b, &c};
+// The region of Steiner points of Theorem 14 before condition 3: the open triangle, each joint's cone
+// and, at each notch, the views across the other two (the kernel of Q). Returned closed, with its
+// vertices; empty when it has no interior.
+std::vector<QPoint> Patterns::x3_region(const std::array<const Joint*, 3>& joints) const {
   std::vector<QPoint> region;
-  for (const AdaptedNotch* n : tri) region.push_back(at(notches_[n->notch]));
-  if (orient(region[0], region[1], region[2]) <= 0) return std::nullopt;  // condition 1
+  for (const Joint* j : joints) region.push_back(notch_point(j->notch));
+  if (orient(region[0], region[1], region[2]) <= 0) return {};  // condition 1
   for (std::size_t k = 0; k < 3; ++k) {
-    const AdaptedNotch& n = *tri[k];
-    const AdaptedNotch& ahead = *tri[(k + 1) % 3];
-    const AdaptedNotch& behind = *tri[(k + 2) % 3];
+    const Joint& n = *joints[k];
+    const std::size_t ahead = joints[(k + 1) % 3]->notch, behind = joints[(k + 2) % 3]->notch;
     const VertexId vid = notches_[n.notch];
     const QPoint& v = at(vid);
     const Vec reference = at(static_cast<VertexId>(p_.next(vid))) - v;
-    const Cone cone = cone_of(v, n);
+    const Vec lower = n.lower - v, upper = n.upper - v;
     // Q's edges at this notch: the views across the notches ahead and behind.
-    const QPoint& low = at(transition(n.notch, ahead.notch));
-    const QPoint& high = at(transition(n.notch, behind.notch));
-    if (!turns_before(reference, low - v, cone.upper) || !turns_before(reference, cone.lower, high - v))
-      return std::nullopt;
-    std::vector<HalfPlane> planes{{v, n.forward}, {n.backward, v}};
-    if (turns_before(reference, cone.lower, low - v)) planes.push_back({v, low});
-    if (turns_before(reference, high - v, cone.upper)) planes.push_back({high, v});
+    const QPoint& low = at(transition(n.notch, ahead));
+    const QPoint& high = at(transition(n.notch, behind));
+    if (!turns_before(reference, low - v, upper) || !turns_before(reference, lower, high - v)) return {};
+    std::vector<HalfPlane> planes{{v, n.lower}, {n.upper, v}};
+    if (turns_before(reference, lower, low - v)) planes.push_back({v, low});
+    if (turns_before(reference, high - v, upper)) planes.push_back({high, v});
     for (const HalfPlane& h : planes) {
       region = clip(region, h);
-      if (region.size() < 3) return std::nullopt;
+      if (region.size() < 3) return {};
     }
   }
-  if (twice_area(region) <= 0) return std::nullopt;
-  ++x3_candidates_;
-  Rational sx = 0, sy = 0;
-  for (const QPoint& q : region) sx += q.x(), sy += q.y();
-  const QPoint s(sx / static_cast<int>(region.size()), sy / static_cast<int>(region.size()));
-  for (const AdaptedNotch* n : tri)
-    if (!sees(notches_[n->notch], s)) return std::nullopt;
+  if (twice_area(region) <= 0) return {};
+  return region;
+}
+
+// Condition 3, on the chosen point: its three edges lie in P.
+std::optional<QPoint> Patterns::verified(const QPoint& s, const std::array<const Joint*, 3>& joints) {
+  for (const Joint* j : joints)
+    if (!sees(notches_[j->notch], s)) return std::nullopt;
   ++x3_found_;
   return s;
+}
+
+std::optional<QPoint> Patterns::x3(const Joint& a, const Joint& b, const Joint& c) {
+  ++x3_tests_;
+  const std::array<const Joint*, 3> joints{&a, &b, &c};
+  const std::vector<QPoint> region = x3_region(joints);
+  if (region.empty()) return std::nullopt;
+  ++x3_candidates_;
+  return verified(average(region), joints);
+}
+
+std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const Joint& c, bool counter_clockwise) {
+  ++x3_tests_;
+  const std::array<const Joint*, 3> joints{&a, &b, &c};
+  const std::vector<QPoint> region = x3_region(joints);
+  if (region.empty()) return std::nullopt;
+  ++x3_candidates_;
+  const QPoint& v = notch_point(a.notch);
+  const QPoint* best = &region[0];
+  for (const QPoint& q : region) {
+    const int turn = orient(v, *best, q);
+    if (counter_clockwise ? turn > 0 : turn < 0) best = &q;
+  }
+  const QPoint mid = average(region);
+  const QPoint s(best->x() + (mid.x() - best->x()) / 64, best->y() + (mid.y() - best->y()) / 64);
+  return verified(s, joints);
+}
+
+// The tip of Q facing the chain from notch a counter-clockwise to notch b (Theorem 15's reductions
+// take a Steiner point there): where a's edge turned as far as it may towards that chain meets b's.
+// a's edge is bounded by its range, by its view across b and by the line ab; b's likewise.
+const std::optional<QPoint>& Patterns::tip(std::size_t a, std::size_t b) {
+  const std::size_t r = notches_.size();
+  std::optional<QPoint>& out = tip_[a * r + b];
+  if (tip_known_[a * r + b]) return out;
+  tip_known_[a * r + b] = 1;
+  ++tips_;
+  const VertexId va = notches_[a], vb = notches_[b];
+  const QPoint &pa = at(va), &pb = at(vb);
+  const Joint ja = joint(bare(a)), jb = joint(bare(b));
+  const Vec ref_a = at(static_cast<VertexId>(p_.next(va))) - pa;
+  const Vec ref_b = at(static_cast<VertexId>(p_.next(vb))) - pb;
+  QPoint from_a = ja.lower;
+  for (const QPoint& c : {at(transition(a, b)), pb})
+    if (turns_before(ref_a, from_a - pa, c - pa)) from_a = c;
+  QPoint from_b = jb.upper;
+  for (const QPoint& c : {at(transition(b, a)), pa})
+    if (turns_before(ref_b, c - pb, from_b - pb)) from_b = c;
+  // Each edge must stay in its notch's range (closed).
+  if (turns_before(ref_a, ja.upper - pa, from_a - pa) || turns_before(ref_b, from_b - pb, jb.lower - pb)) return out;
+  // The rays a -> from_a and b -> from_b: a + s (from_a - a) = b + t (from_b - b), s, t > 0.
+  const Vec da = from_a - pa, db = from_b - pb, ab = pb - pa;
+  const Rational den = cross(da, db);
+  if (den == 0) return out;
+  const Rational s = cross(ab, db) / den, t = cross(ab, da) / den;
+  if (s <= 0 || t <= 0) return out;
+  const QPoint x(pa.x() + s * da.x(), pa.y() + s * da.y());
+  if (orient(pa, pb, x) <= 0 || !sees(va, x) || !sees(vb, x)) return out;
+  out = x;
+  return out;
+}
+
+std::optional<std::pair<QPoint, QPoint>> Patterns::x4(std::size_t a, std::size_t b, std::size_t c, std::size_t d) {
+  ++x4_tests_;
+  const std::optional<QPoint>& first = tip(a, b);
+  if (!first) return std::nullopt;
+  const std::optional<QPoint>& second = tip(c, d);
+  if (!second || *first == *second) return std::nullopt;
+  const QPoint &pa = notch_point(a), &pb = notch_point(b), &pc = notch_point(c), &pd = notch_point(d);
+  if (!splits_reflex_side(pa, pb, *first, *second) || !splits_reflex_side(pc, pd, *second, *first)) return std::nullopt;
+  // The only crossings are the Steiner points (Lemma 9, condition 1).
+  for (const QPoint* u : {&pa, &pb})
+    for (const QPoint* w : {&pc, &pd})
+      if (CGAL::do_intersect(Segment(*u, *first), Segment(*w, *second))) return std::nullopt;
+  if (!inside(*first, *second)) return std::nullopt;
+  ++x4_found_;
+  return std::make_pair(*first, *second);
 }
 
 bool Patterns::sees(VertexId v, const QPoint& s) const {
@@ -201,12 +303,22 @@ bool Patterns::sees(VertexId v, const QPoint& s) const {
   return true;
 }
 
+bool Patterns::inside(const QPoint& s, const QPoint& t) const {
+  const Segment seg(s, t);
+  for (std::size_t e = 0; e < p_.size(); ++e)
+    if (CGAL::do_intersect(seg, Segment(at(static_cast<VertexId>(e)), at(static_cast<VertexId>(p_.next(e)))))) return false;
+  return true;
+}
+
 void Patterns::report(Counters& counters) const {
   counters["x2_tests"] += x2_tests_;
   counters["x2_found"] += x2_found_;
   counters["x3_tests"] += x3_tests_;
   counters["x3_candidates"] += x3_candidates_;
   counters["x3_found"] += x3_found_;
+  counters["x4_tests"] += x4_tests_;
+  counters["x4_found"] += x4_found_;
+  counters["tips"] += tips_;
 }
 
 }  // namespace pd::cd

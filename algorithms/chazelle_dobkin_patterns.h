@@ -37,6 +37,17 @@
 //     every kernel point is a Steiner point; by the necessity half, no Steiner point exists otherwise.
 //   - Steiner points whose region has no interior (patterns that exist only in degenerate position,
 //     an edge through a vertex of P or exactly along a window) are not reported.
+//   - Corollary 14.2 (a subtree's Steiner point chosen to turn its edge at z_i as far as possible):
+//     the extreme vertex of the same region, seen from z_i; it lies on the region's boundary, so it
+//     is moved 1/64 of the way towards the region's average, into the interior, before it is checked.
+//   - X4 (Theorem 15): "applying the two reductions ... takes A to the intersection of v_i r_ij and
+//     v_j l_ji": each Steiner point is put at the tip of Q facing the chain between its two notches,
+//     where each notch's edge is turned as far towards that chain as its range, its view across the
+//     other notch and the line between the two allow. The pattern exists when both tips exist with
+//     their edges in P, the segment AB lies in P, and AB leaves no reflex angle at A or at B (it lies
+//     in the cone between the extensions of A's two notch edges beyond A, and likewise at B); edges
+//     that would pass through a vertex of P are refused, as the thesis assumes no reduction meets a
+//     notch (the pattern then reduces to a Y-pattern, found as such).
 // Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains) are replaced by the
 // visibility of every vertex from each notch (algorithms/visibility.h, O(n) per notch after an
 // O(n log n) triangulation): the transitions are read from it by binary search, O(r^2 log n) in all.
@@ -46,8 +57,10 @@
 
 #include "core/registry.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace pd::cd {
@@ -62,6 +75,13 @@ struct AdaptedNotch {
   QPoint backward;    // a point of the backward arm other than the notch
 };
 
+// The directions allowed at a notch for its edge to a Steiner point: the open cone of the X with
+// orient(v, lower, X) > 0 and orient(v, upper, X) < 0, less than 180 degrees wide (or a half-plane).
+struct Joint {
+  std::size_t notch;
+  QPoint lower, upper;
+};
+
 class Patterns {
  public:
   // Notches and visibility from each: O(n log n + n r + r^2 log n).
@@ -69,21 +89,50 @@ class Patterns {
 
   // The notches, in counter-clockwise (index) order.
   const std::vector<VertexId>& notches() const { return notches_; }
+  const QPoint& notch_point(std::size_t notch) const { return exact_[notches_[notch]]; }
   AdaptedNotch bare(std::size_t notch) const;
+
+  // The cone that resolves what is left of the angle at a: between the extensions of its arms beyond
+  // it while that angle is reflex, between the arms themselves once it is not.
+  Joint joint(const AdaptedNotch& a) const;
+  // The directions of an edge hanging at a bare notch that leave the angle on its other side reflex:
+  // on the forward side (between the forward edge and the extension of the backward edge), or on the
+  // backward side.
+  Joint forward_branch(std::size_t notch) const;
+  Joint backward_branch(std::size_t notch) const;
+
+  // Whether the segment between notches a and b is a diagonal (R(a, ab) = ab, Theorem 13). O(1).
+  bool diagonal(std::size_t a, std::size_t b) const { return sees_notch_[a * notches_.size() + b]; }
+  // Whether the segment from a towards `towards` resolves the angle still open at a: both angles it
+  // leaves are at most 180 degrees and it does not run along an arm. O(1).
+  bool resolves(const AdaptedNotch& a, const QPoint& towards) const;
 
   // Theorem 13 on adapted notches: whether segment ab is a diagonal that resolves the angles still open
   // at a and at b (180 degrees allowed). O(1).
   bool x2(const AdaptedNotch& a, const AdaptedNotch& b);
 
-  // Theorem 14 on adapted notches a, b, c, distinct and in counter-clockwise boundary order: a Steiner
-  // point S such that Sa, Sb, Sc lie in P, resolve the angles still open at a, b, c, and leave no
-  // reflex angle at S; or nothing. O(1) when rejected by the half-planes, O(n) otherwise.
-  std::optional<QPoint> x3(const AdaptedNotch& a, const AdaptedNotch& b, const AdaptedNotch& c);
+  // Theorem 14 on joints a, b, c at distinct notches in counter-clockwise boundary order: a Steiner
+  // point S such that Sa, Sb, Sc lie in P, leave S without a reflex angle and each lies in its joint's
+  // cone; or nothing. O(1) when the half-planes reject, O(n) otherwise. `x3` returns the average of the
+  // region's vertices; `x3_extreme` the point of the region turned furthest around a (counter-clockwise
+  // when `counter_clockwise`), moved 1/64 of the way towards that average so that it is interior
+  // (Corollary 14.2; see the header comment).
+  std::optional<QPoint> x3(const Joint& a, const Joint& b, const Joint& c);
+  std::optional<QPoint> x3_extreme(const Joint& a, const Joint& b, const Joint& c, bool counter_clockwise);
+
+  // Theorem 15, with the Steiner points at the tips of Q: the loosest X4-pattern whose first Steiner
+  // point joins notches a and b and whose second joins c and d, the four distinct and in
+  // counter-clockwise boundary order starting anywhere (so a..b and c..d are the chains the two
+  // Steiner points face). Returns the two Steiner points or nothing. O(1) after the tips, then O(n).
+  std::optional<std::pair<QPoint, QPoint>> x4(std::size_t a, std::size_t b, std::size_t c, std::size_t d);
 
   // Whether the open segment from polygon vertex v to point s lies in P's interior, s included. O(n).
   bool sees(VertexId v, const QPoint& s) const;
+  // Whether the closed segment st, between interior points, avoids P's boundary. O(n).
+  bool inside(const QPoint& s, const QPoint& t) const;
 
-  // Counts "x2_tests", "x2_found", "x3_tests", "x3_candidates" (past the half-planes), "x3_found".
+  // Counts "x2_tests", "x2_found", "x3_tests", "x3_candidates" (past the half-planes), "x3_found",
+  // "x4_tests", "x4_found", "tips".
   void report(Counters& counters) const;
 
  private:
@@ -92,6 +141,9 @@ class Patterns {
     return transition_[from * notches_.size() + towards];
   }
   void compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible);
+  std::vector<QPoint> x3_region(const std::array<const Joint*, 3>& joints) const;
+  std::optional<QPoint> verified(const QPoint& s, const std::array<const Joint*, 3>& joints);
+  const std::optional<QPoint>& tip(std::size_t a, std::size_t b);
 
   const Polygon& p_;
   std::vector<QPoint> exact_;
@@ -100,7 +152,11 @@ class Patterns {
   // notch i's view passes across notch j's boundary position (see the header comment).
   std::vector<char> sees_notch_;
   std::vector<VertexId> transition_;
+  // r x r, filled on demand: the tip of Q facing the chain from notch a to notch b (Theorem 15).
+  std::vector<char> tip_known_;
+  std::vector<std::optional<QPoint>> tip_;
   std::int64_t x2_tests_ = 0, x2_found_ = 0, x3_tests_ = 0, x3_candidates_ = 0, x3_found_ = 0;
+  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0;
 };
 
 }  // namespace pd::cd

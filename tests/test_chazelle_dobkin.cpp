@@ -4,7 +4,9 @@
 // validating the result exactly (a found pattern must save one piece), and, where it reports no
 // pattern, by a grid of candidate Steiner points checked against the definition.
 #include "algorithms/chazelle_dobkin_patterns.h"
+#include "algorithms/keil_snoeyink.h"
 #include "algorithms/naive.h"
+#include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"
 #include "tests/brute_force.h"
@@ -84,10 +86,12 @@ TEST(ChazelleDobkinPatterns, XPatternTriangleHasItsX3AndNoX2) {
   ASSERT_EQ(patterns.notches().size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = 0; j < 3; ++j) {
-      if (i != j) EXPECT_FALSE(patterns.x2(patterns.bare(i), patterns.bare(j)));
+      if (i != j) {
+        EXPECT_FALSE(patterns.x2(patterns.bare(i), patterns.bare(j)));
+      }
     }
   }
-  const auto s = patterns.x3(patterns.bare(0), patterns.bare(1), patterns.bare(2));
+  const auto s = patterns.x3(patterns.joint(patterns.bare(0)), patterns.joint(patterns.bare(1)), patterns.joint(patterns.bare(2)));
   ASSERT_TRUE(s.has_value());
   Counters counters;
   const Decomposition d = with_x3(p, patterns.notches(), {0, 1, 2}, *s, counters);
@@ -106,7 +110,7 @@ TEST(ChazelleDobkinPatterns, EveryX3FoundSavesOnePiece) {
     for (std::size_t i = 0; i < r; ++i)
       for (std::size_t j = i + 1; j < r; ++j)
         for (std::size_t k = j + 1; k < r; ++k) {
-          const auto steiner = patterns.x3(patterns.bare(i), patterns.bare(j), patterns.bare(k));
+          const auto steiner = patterns.x3(patterns.joint(patterns.bare(i)), patterns.joint(patterns.bare(j)), patterns.joint(patterns.bare(k)));
           if (!steiner) continue;
           ++found;
           Counters counters;
@@ -149,7 +153,7 @@ TEST(ChazelleDobkinPatterns, NoX3MissedOnAGrid) {
     for (std::size_t i = 0; i < r; ++i)
       for (std::size_t j = i + 1; j < r; ++j)
         for (std::size_t k = j + 1; k < r; ++k) {
-          if (patterns.x3(patterns.bare(i), patterns.bare(j), patterns.bare(k))) continue;
+          if (patterns.x3(patterns.joint(patterns.bare(i)), patterns.joint(patterns.bare(j)), patterns.joint(patterns.bare(k)))) continue;
           const std::array<VertexId, 3> v{notches[i], notches[j], notches[k]};
           if (orient(p[v[0]], p[v[1]], p[v[2]]) <= 0) continue;
           // Barycentric grid points (a, b, c) / kGrid, all strictly positive.
@@ -161,6 +165,79 @@ TEST(ChazelleDobkinPatterns, NoX3MissedOnAGrid) {
               EXPECT_FALSE(is_x3_steiner(p, v, x)) << label(s) << " triple " << i << "," << j << "," << k;
             }
         }
+  }
+}
+
+// ---- the program (chazelle-dobkin-n5) ----
+
+// Runs `name` on p, expects a valid result, returns its piece count.
+std::size_t valid_pieces(const std::string& name, const Polygon& p, const std::string& where) {
+  const Algorithm* a = find_algorithm(name);
+  Counters counters;
+  const Decomposition d = a->run(p, counters);
+  const Validation v = validate(p, d, Kind::Convex, true);
+  EXPECT_TRUE(v.ok) << name << " on " << where << ": " << v.reason;
+  return pieces_of(p, d).size();
+}
+
+const std::vector<std::string>& programs() {
+  static const std::vector<std::string> names{"chazelle-dobkin-n5"};
+  return names;
+}
+
+// ceil(r/2) + 1 <= pieces <= min(diagonal-only optimum, r + 1) (Theorem 8; a diagonal decomposition is
+// a decomposition with Steiner points allowed).
+TEST(ChazelleDobkin, BetweenTheLowerBoundAndTheDiagonalOptimum) {
+  std::vector<Sample> samples = small_samples();
+  for (std::uint64_t seed : {4, 5, 6, 7}) {
+    samples.push_back({"random", 30, 10, seed});
+    samples.push_back({"notch-heavy", 20, 15, seed});
+    samples.push_back({"comb", 30, 12, seed});
+  }
+  for (const Sample& s : samples) {
+    const Polygon p = make(s);
+    const std::size_t r = p.reflex_count();
+    Counters counters;
+    const std::size_t diagonal_only = keil_snoeyink(p, counters).cuts.size() + 1;
+    for (const std::string& name : programs()) {
+      const std::size_t pieces = valid_pieces(name, p, label(s));
+      EXPECT_GE(pieces, (r + 1) / 2 + 1) << name << " on " << label(s);
+      EXPECT_LE(pieces, std::min(diagonal_only, r + 1)) << name << " on " << label(s);
+    }
+  }
+}
+
+// The x-pattern family: one Steiner point per triple of slits, 2m + 1 pieces for m triples (3 for the
+// slit triangle, where diagonals need 4).
+TEST(ChazelleDobkin, ReachesTheXPatternOptimum) {
+  for (std::size_t m : {1, 2, 3, 5})
+    for (std::uint64_t seed : {1, 2}) {
+      const std::size_t n = m == 1 ? 12 : 9 * m + 4;
+      const Polygon p = Polygon::make(generate("x-pattern", n, 3 * m, seed));
+      for (const std::string& name : programs())
+        EXPECT_EQ(valid_pieces(name, p, "x-pattern m=" + std::to_string(m)), 2 * m + 1) << name << " m=" << m;
+    }
+}
+
+// A strip with m pairs of V-shaped dents facing each other across it: one segment resolves each pair,
+// so r/2 + 1 = m + 1 pieces, the lower bound.
+Polygon facing_pairs(int m) {
+  std::vector<Point> v;
+  v.emplace_back(0, 0);
+  for (int k = 0; k < m; ++k) v.emplace_back(10 * k + 3, 0), v.emplace_back(10 * k + 5, 3), v.emplace_back(10 * k + 7, 0);
+  v.emplace_back(10 * m, 0);
+  v.emplace_back(10 * m, 10);
+  for (int k = m; k-- > 0;) v.emplace_back(10 * k + 7, 10), v.emplace_back(10 * k + 5, 7), v.emplace_back(10 * k + 3, 10);
+  v.emplace_back(0, 10);
+  return Polygon::make(v);
+}
+
+TEST(ChazelleDobkin, ResolvesFacingPairsWithOneSegmentEach) {
+  for (int m : {1, 2, 4, 7}) {
+    const Polygon p = facing_pairs(m);
+    ASSERT_EQ(p.reflex_count(), static_cast<std::size_t>(2 * m));
+    for (const std::string& name : programs())
+      EXPECT_EQ(valid_pieces(name, p, "facing pairs m=" + std::to_string(m)), static_cast<std::size_t>(m + 1)) << name;
   }
 }
 
