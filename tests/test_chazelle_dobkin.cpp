@@ -3,6 +3,9 @@
 // predicates; X3 (Theorem 14) by building the pattern, finishing with the naive decomposition and
 // validating the result exactly (a found pattern must save one piece), and, where it reports no
 // pattern, by a grid of candidate Steiner points checked against the definition.
+// Then the program (chazelle-dobkin-n5): valid, between ceil(r/2) + 1 and min(keil-snoeyink, r + 1)
+// pieces, the known optimum of the x-pattern family (2m + 1) and of facing pairs of notches (r/2 + 1),
+// and at least as many patterns as an exhaustive search over compatible X2- and X3-patterns.
 #include "algorithms/chazelle_dobkin_patterns.h"
 #include "algorithms/keil_snoeyink.h"
 #include "algorithms/naive.h"
@@ -12,6 +15,9 @@
 #include "tests/brute_force.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
 
 #include <string>
 #include <vector>
@@ -217,6 +223,68 @@ TEST(ChazelleDobkin, ReachesTheXPatternOptimum) {
       for (const std::string& name : programs())
         EXPECT_EQ(valid_pieces(name, p, "x-pattern m=" + std::to_string(m)), 2 * m + 1) << name << " m=" << m;
     }
+}
+
+// The program finds at least as many compatible patterns as an exhaustive search over the X2- and
+// X3-patterns of bare notches (pairwise disjoint, notches not interleaving round the boundary): it
+// also builds larger Y-patterns and X4-patterns, so it may find more, never fewer.
+std::size_t most_small_patterns(const std::vector<std::vector<std::size_t>>& patterns, std::size_t r) {
+  std::vector<int> owner(r, -1);
+  auto interleave = [&](const std::vector<std::size_t>& a, int b) {
+    // a and pattern b interleave when some notch of b lies strictly between two consecutive notches of
+    // a and some other notch of b outside that gap.
+    for (std::size_t x = 0; x < a.size(); ++x) {
+      const std::size_t lo = a[x], hi = a[(x + 1) % a.size()];
+      auto inside = [&](std::size_t v) { return lo < hi ? lo < v && v < hi : v > lo || v < hi; };
+      bool in = false, out = false;
+      for (std::size_t v = 0; v < r; ++v)
+        if (owner[v] == b) (inside(v) ? in : out) = true;
+      if (in && out) return true;
+    }
+    return false;
+  };
+  std::size_t best = 0;
+  std::function<void(std::size_t, std::size_t)> search = [&](std::size_t from, std::size_t chosen) {
+    best = std::max(best, chosen);
+    for (std::size_t q = from; q < patterns.size(); ++q) {
+      const auto& pattern = patterns[q];
+      bool free = true;
+      for (std::size_t v : pattern) free = free && owner[v] < 0;
+      for (int b = 0; free && b < static_cast<int>(patterns.size()); ++b)
+        if (std::find(owner.begin(), owner.end(), b) != owner.end()) free = !interleave(pattern, b);
+      if (!free) continue;
+      for (std::size_t v : pattern) owner[v] = static_cast<int>(q);
+      search(q + 1, chosen + 1);
+      for (std::size_t v : pattern) owner[v] = -1;
+    }
+  };
+  search(0, 0);
+  return best;
+}
+
+TEST(ChazelleDobkin, FindsAtLeastTheBestSetOfX2AndX3Patterns) {
+  std::size_t samples_with_patterns = 0;
+  for (const Sample& s : small_samples()) {
+    const Polygon p = make(s);
+    cd::Patterns patterns(p);
+    const std::size_t r = patterns.notches().size();
+    if (r > 9) continue;
+    std::vector<std::vector<std::size_t>> small;
+    for (std::size_t i = 0; i < r; ++i)
+      for (std::size_t j = i + 1; j < r; ++j) {
+        if (patterns.x2(patterns.bare(i), patterns.bare(j))) small.push_back({i, j});
+        for (std::size_t k = j + 1; k < r; ++k)
+          if (patterns.x3(patterns.joint(patterns.bare(i)), patterns.joint(patterns.bare(j)), patterns.joint(patterns.bare(k))))
+            small.push_back({i, j, k});
+      }
+    const std::size_t expected = most_small_patterns(small, r);
+    samples_with_patterns += expected > 0;
+    for (const std::string& name : programs()) {
+      const std::size_t pieces = valid_pieces(name, p, label(s));
+      EXPECT_LE(pieces, r + 1 - expected) << name << " on " << label(s);
+    }
+  }
+  EXPECT_GT(samples_with_patterns, 5u);
 }
 
 // A strip with m pairs of V-shaped dents facing each other across it: one segment resolves each pair,
