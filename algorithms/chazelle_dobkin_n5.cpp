@@ -1,0 +1,47 @@
+// chazelle-dobkin-n5: optimal convex decomposition with Steiner points, Algorithm CD with Theorem 15's
+// X4 detection (B. Chazelle, Computational Geometry and Convexity, thesis, Yale 1980 (000), Sec. 2.3,
+// Theorems 13-17). The dynamic program (STEPs 1-5), its orientation and its reconstructions are in
+// algorithms/chazelle_dobkin.h; pattern detection in algorithms/chazelle_dobkin_patterns.h.
+//
+// STEP 3's B: X4-patterns are tried for every pair of inner notches of the interval, in both pairings
+// (Figure 2.24-a, -b: the first Steiner point joins z_i and z_k, or z_k and z_l), with the Steiner
+// points at the tips of Q (Theorem 15): O(r^2) tests per interval, O(r^4) in all, the r^5 of Theorem 17
+// with Theorem 15's O(r log(n/r)) test. A candidate is tried only when its count would beat the best so
+// far, so the tests actually made are often far fewer.
+// Deviation: the segment AB of Theorem 15 is tested against every edge of P (O(n)) for the candidates
+// that pass the O(1) angle tests, in place of the convex chains (O(r log(n/r))).
+//
+// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^4) pattern tests, each O(1) or, past the
+// constant-time tests, O(n). Space O(r^2 + n). Pre: a simple counter-clockwise polygon. Output: an
+// optimal convex decomposition (OPT = r + 1 - the most compatible patterns), Steiner points exact.
+#include "algorithms/chazelle_dobkin.h"
+
+namespace pd {
+namespace {
+
+class ProgramN5 final : public cd::Program {
+ public:
+  using cd::Program::Program;
+
+ private:
+  std::optional<cd::X4Choice> x4_term(int i, int j, int to_beat) override {
+    std::optional<cd::X4Choice> best;
+    for (int k = i + 1; k < j; ++k)
+      for (int l = k + 1; l < j; ++l) {
+        const int count = S(i + 1, k - 1) + S(k + 1, l - 1) + S(l + 1, j - 1) + 1;
+        if (count <= (best ? best->count : to_beat)) continue;
+        if (const auto x = patterns().x4(i, k, l, j)) best = cd::X4Choice{count, k, l, false, x->first, x->second};
+        else if (const auto y = patterns().x4(k, l, j, i)) best = cd::X4Choice{count, k, l, true, y->first, y->second};
+      }
+    return best;
+  }
+};
+
+Decomposition chazelle_dobkin_n5(const Polygon& p, Counters& counters) { return ProgramN5(p).run(counters); }
+
+}  // namespace
+
+REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin-n5", Kind::Convex, true, true, "n*r+r^5*log(n/r)", "== OPT",
+                             "Chazelle thesis (000) Sec. 2.3, Thms 13-17", 20000, chazelle_dobkin_n5});
+
+}  // namespace pd

@@ -1,0 +1,324 @@
+// Pattern detection for Chazelle-Dobkin: see chazelle_dobkin_patterns.h for the method, the
+// reconstruction of Theorem 14's segments and the deviation from Theorem 11.
+#include "algorithms/chazelle_dobkin_patterns.h"
+
+#include "algorithms/visibility.h"
+
+#include <algorithm>
+#include <array>
+
+namespace pd::cd {
+namespace {
+
+using Vec = ExactKernel::Vector_2;
+using Segment = ExactKernel::Segment_2;
+
+Rational cross(const Vec& u, const Vec& v) { return u.x() * v.y() - u.y() * v.x(); }
+Rational dot(const Vec& u, const Vec& v) { return u.x() * v.x() + u.y() * v.y(); }
+
+// The open half-plane left of the directed line from `from` through `to`.
+struct HalfPlane {
+  QPoint from, to;
+};
+
+// Where segment se meets h's line, for s and e on opposite sides of it.
+QPoint crossing(const HalfPlane& h, const QPoint& s, const QPoint& e) {
+  const Vec d = h.to - h.from;
+  const Rational fs = cross(d, s - h.from), fe = cross(d, e - h.from);
+  const Rational t = fs / (fs - fe);
+  return QPoint(s.x() + t * (e.x() - s.x()), s.y() + t * (e.y() - s.y()));
+}
+
+// The part of convex polygon `poly` on the closed left side of h (Sutherland-Hodgman, one plane).
+std::vector<QPoint> clip(const std::vector<QPoint>& poly, const HalfPlane& h) {
+  std::vector<QPoint> out;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const QPoint& s = poly[i];
+    const QPoint& e = poly[(i + 1) % poly.size()];
+    const int os = orient(h.from, h.to, s), oe = orient(h.from, h.to, e);
+    if (os >= 0) out.push_back(s);
+    if (os * oe < 0) out.push_back(crossing(h, s, e));
+  }
+  return out;
+}
+
+Rational twice_area(const std::vector<QPoint>& poly) {
+  Rational sum = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const QPoint& s = poly[i];
+    const QPoint& e = poly[(i + 1) % poly.size()];
+    sum += s.x() * e.y() - s.y() * e.x();
+  }
+  return sum;
+}
+
+// Directions at a notch, ordered by the counter-clockwise angle from `reference` (the notch's forward
+// polygon edge), in [0, 360): every direction used here lies in the notch's interior angle, where
+// this order is the angular order of the thesis's sweeps.
+bool turns_before(const Vec& reference, const Vec& d1, const Vec& d2) {
+  auto half = [&](const Vec& d) {
+    const Rational c = cross(reference, d);
+    return c > 0 || (c == 0 && dot(reference, d) > 0) ? 0 : 1;
+  };
+  const int h1 = half(d1), h2 = half(d2);
+  if (h1 != h2) return h1 < h2;
+  return cross(d1, d2) > 0;
+}
+
+// 2v - w: the point such that v lies halfway between it and w (the extension of wv beyond v).
+QPoint mirrored(const QPoint& v, const QPoint& w) { return QPoint(2 * v.x() - w.x(), 2 * v.y() - w.y()); }
+
+QPoint average(const std::vector<QPoint>& points) {
+  Rational sx = 0, sy = 0;
+  for (const QPoint& q : points) sx += q.x(), sy += q.y();
+  const Rational k = static_cast<int>(points.size());
+  return QPoint(sx / k, sy / k);
+}
+
+// The Steiner point's angle at the tip of a pair of notch edges: whether the edge from tip to
+// `other` splits the angle on the side away from the pocket of a and b into two angles of at most
+// 180 degrees, i.e. lies in the closed cone between the extensions of a->tip and b->tip.
+bool splits_reflex_side(const QPoint& a, const QPoint& b, const QPoint& tip, const QPoint& other) {
+  const Vec u = tip - a, w = tip - b, d = other - tip;
+  const Rational uw = cross(u, w);
+  if (uw == 0) return orient(a, b, other) >= 0;
+  const int s = uw > 0 ? 1 : -1;
+  return s * cross(u, d) >= 0 && s * cross(d, w) >= 0;
+}
+
+}  // namespace
+
+Patterns::Patterns(const Polygon& p) : p_(p) {
+  exact_.reserve(p.size());
+  for (const Point& v : p.vertices()) exact_.push_back(to_exact(v));
+  for (std::size_t v = 0; v < p.size(); ++v)
+    if (p.is_reflex(v)) notches_.push_back(static_cast<VertexId>(v));
+  const std::size_t r = notches_.size();
+  sees_notch_.assign(r * r, 0);
+  transition_.assign(r * r, 0);
+  tip_known_.assign(r * r, 0);
+  tip_.assign(r * r, std::nullopt);
+  if (r == 0) return;
+  const VisibilityGraph visibility(p);
+  std::vector<std::uint32_t> visible;
+  std::int64_t triangles = 0;
+  for (std::size_t i = 0; i < r; ++i) {
+    visible.clear();
+    visibility.visible_from(notches_[i], visible, triangles);
+    compute_transitions(i, visible);
+  }
+}
+
+// For each other notch w: the vertex through which notch `from`'s view passes across w's boundary
+// position. `visible` is in counter-clockwise order from the notch, so the boundary points the notch
+// sees, in boundary order, sweep counter-clockwise around it: the last vertex x seen up to w and the
+// first y seen from w on bound the hidden stretch that holds w (when w itself is not seen), and the
+// window over it lies on the ray through x when the boundary turns away behind x, else through y.
+void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible) {
+  const std::size_t n = p_.size(), r = notches_.size();
+  const VertexId v = notches_[from];
+  auto offset = [&](std::size_t u) { return (u + n - v) % n; };
+  for (std::size_t k = 0; k < r; ++k) {
+    if (k == from) continue;
+    const VertexId w = notches_[k];
+    const auto after_w = std::upper_bound(visible.begin(), visible.end(), offset(w),
+                                          [&](std::size_t o, std::uint32_t u) { return o < offset(u); });
+    const VertexId x = *(after_w - 1);
+    VertexId through = x;
+    if (x != w) {
+      const VertexId y = *after_w;
+      if (orient(p_[v], p_[x], p_[p_.next(x)]) > 0) through = y;
+    }
+    transition_[from * r + k] = through;
+    const bool adjacent = offset(w) == 1 || offset(w) == n - 1;
+    sees_notch_[from * r + k] = x == w && !adjacent;
+  }
+}
+
+AdaptedNotch Patterns::bare(std::size_t notch) const {
+  const VertexId v = notches_[notch];
+  return {notch, at(static_cast<VertexId>(p_.next(v))), at(static_cast<VertexId>(p_.prev(v)))};
+}
+
+Joint Patterns::joint(const AdaptedNotch& a) const {
+  const QPoint& v = notch_point(a.notch);
+  if (cross(a.forward - v, a.backward - v) < 0) return {a.notch, mirrored(v, a.backward), mirrored(v, a.forward)};
+  return {a.notch, a.forward, a.backward};
+}
+
+Joint Patterns::forward_branch(std::size_t notch) const {
+  const VertexId v = notches_[notch];
+  return {notch, at(static_cast<VertexId>(p_.next(v))), mirrored(at(v), at(static_cast<VertexId>(p_.prev(v))))};
+}
+
+Joint Patterns::backward_branch(std::size_t notch) const {
+  const VertexId v = notches_[notch];
+  return {notch, mirrored(at(v), at(static_cast<VertexId>(p_.next(v)))), at(static_cast<VertexId>(p_.prev(v)))};
+}
+
+// The closed cone at an adapted notch: 180-degree angles allowed, the arms themselves not.
+bool Patterns::resolves(const AdaptedNotch& n, const QPoint& towards) const {
+  const QPoint& v = notch_point(n.notch);
+  const Vec d = towards - v, f = n.forward - v, b = n.backward - v;
+  const Rational cf = cross(f, d), cb = cross(d, b);
+  return (cf > 0 || (cf == 0 && dot(f, d) < 0)) && (cb > 0 || (cb == 0 && dot(d, b) < 0));
+}
+
+bool Patterns::x2(const AdaptedNotch& a, const AdaptedNotch& b) {
+  ++x2_tests_;
+  const bool found = diagonal(a.notch, b.notch) && resolves(a, notch_point(b.notch)) && resolves(b, notch_point(a.notch));
+  x2_found_ += found;
+  return found;
+}
+
+// The region of Steiner points of Theorem 14 before condition 3: the open triangle, each joint's cone
+// and, at each notch, the views across the other two (the kernel of Q). Returned closed, with its
+// vertices; empty when it has no interior.
+std::vector<QPoint> Patterns::x3_region(const std::array<const Joint*, 3>& joints) const {
+  std::vector<QPoint> region;
+  for (const Joint* j : joints) region.push_back(notch_point(j->notch));
+  if (orient(region[0], region[1], region[2]) <= 0) return {};  // condition 1
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Joint& n = *joints[k];
+    const std::size_t ahead = joints[(k + 1) % 3]->notch, behind = joints[(k + 2) % 3]->notch;
+    const VertexId vid = notches_[n.notch];
+    const QPoint& v = at(vid);
+    const Vec reference = at(static_cast<VertexId>(p_.next(vid))) - v;
+    const Vec lower = n.lower - v, upper = n.upper - v;
+    // Q's edges at this notch: the views across the notches ahead and behind.
+    const QPoint& low = at(transition(n.notch, ahead));
+    const QPoint& high = at(transition(n.notch, behind));
+    if (!turns_before(reference, low - v, upper) || !turns_before(reference, lower, high - v)) return {};
+    std::vector<HalfPlane> planes{{v, n.lower}, {n.upper, v}};
+    if (turns_before(reference, lower, low - v)) planes.push_back({v, low});
+    if (turns_before(reference, high - v, upper)) planes.push_back({high, v});
+    for (const HalfPlane& h : planes) {
+      region = clip(region, h);
+      if (region.size() < 3) return {};
+    }
+  }
+  if (twice_area(region) <= 0) return {};
+  return region;
+}
+
+// Condition 3, on the chosen point: its three edges lie in P.
+std::optional<QPoint> Patterns::verified(const QPoint& s, const std::array<const Joint*, 3>& joints) {
+  for (const Joint* j : joints)
+    if (!sees(notches_[j->notch], s)) return std::nullopt;
+  ++x3_found_;
+  return s;
+}
+
+std::optional<QPoint> Patterns::x3(const Joint& a, const Joint& b, const Joint& c) {
+  ++x3_tests_;
+  const std::array<const Joint*, 3> joints{&a, &b, &c};
+  const std::vector<QPoint> region = x3_region(joints);
+  if (region.empty()) return std::nullopt;
+  ++x3_candidates_;
+  return verified(average(region), joints);
+}
+
+std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const Joint& c, bool counter_clockwise) {
+  ++x3_tests_;
+  const std::array<const Joint*, 3> joints{&a, &b, &c};
+  const std::vector<QPoint> region = x3_region(joints);
+  if (region.empty()) return std::nullopt;
+  ++x3_candidates_;
+  const QPoint& v = notch_point(a.notch);
+  const QPoint* best = &region[0];
+  for (const QPoint& q : region) {
+    const int turn = orient(v, *best, q);
+    if (counter_clockwise ? turn > 0 : turn < 0) best = &q;
+  }
+  const QPoint mid = average(region);
+  const QPoint s(best->x() + (mid.x() - best->x()) / 64, best->y() + (mid.y() - best->y()) / 64);
+  return verified(s, joints);
+}
+
+// The tip of Q facing the chain from notch a counter-clockwise to notch b (Theorem 15's reductions
+// take a Steiner point there): where a's edge turned as far as it may towards that chain meets b's.
+// a's edge is bounded by its range, by its view across b and by the line ab; b's likewise.
+const std::optional<QPoint>& Patterns::tip(std::size_t a, std::size_t b) {
+  const std::size_t r = notches_.size();
+  std::optional<QPoint>& out = tip_[a * r + b];
+  if (tip_known_[a * r + b]) return out;
+  tip_known_[a * r + b] = 1;
+  ++tips_;
+  const VertexId va = notches_[a], vb = notches_[b];
+  const QPoint &pa = at(va), &pb = at(vb);
+  const Joint ja = joint(bare(a)), jb = joint(bare(b));
+  const Vec ref_a = at(static_cast<VertexId>(p_.next(va))) - pa;
+  const Vec ref_b = at(static_cast<VertexId>(p_.next(vb))) - pb;
+  QPoint from_a = ja.lower;
+  for (const QPoint& c : {at(transition(a, b)), pb})
+    if (turns_before(ref_a, from_a - pa, c - pa)) from_a = c;
+  QPoint from_b = jb.upper;
+  for (const QPoint& c : {at(transition(b, a)), pa})
+    if (turns_before(ref_b, c - pb, from_b - pb)) from_b = c;
+  // Each edge must stay in its notch's range (closed).
+  if (turns_before(ref_a, ja.upper - pa, from_a - pa) || turns_before(ref_b, from_b - pb, jb.lower - pb)) return out;
+  // The rays a -> from_a and b -> from_b: a + s (from_a - a) = b + t (from_b - b), s, t > 0.
+  const Vec da = from_a - pa, db = from_b - pb, ab = pb - pa;
+  const Rational den = cross(da, db);
+  if (den == 0) return out;
+  const Rational s = cross(ab, db) / den, t = cross(ab, da) / den;
+  if (s <= 0 || t <= 0) return out;
+  const QPoint x(pa.x() + s * da.x(), pa.y() + s * da.y());
+  if (orient(pa, pb, x) <= 0 || !sees(va, x) || !sees(vb, x)) return out;
+  out = x;
+  return out;
+}
+
+std::optional<std::pair<QPoint, QPoint>> Patterns::x4(std::size_t a, std::size_t b, std::size_t c, std::size_t d) {
+  ++x4_tests_;
+  const std::optional<QPoint>& first = tip(a, b);
+  if (!first) return std::nullopt;
+  const std::optional<QPoint>& second = tip(c, d);
+  if (!second || *first == *second) return std::nullopt;
+  const QPoint &pa = notch_point(a), &pb = notch_point(b), &pc = notch_point(c), &pd = notch_point(d);
+  if (!splits_reflex_side(pa, pb, *first, *second) || !splits_reflex_side(pc, pd, *second, *first)) return std::nullopt;
+  // The only crossings are the Steiner points (Lemma 9, condition 1).
+  for (const QPoint* u : {&pa, &pb})
+    for (const QPoint* w : {&pc, &pd})
+      if (CGAL::do_intersect(Segment(*u, *first), Segment(*w, *second))) return std::nullopt;
+  if (!inside(*first, *second)) return std::nullopt;
+  ++x4_found_;
+  return std::make_pair(*first, *second);
+}
+
+bool Patterns::sees(VertexId v, const QPoint& s) const {
+  const QPoint& o = at(v);
+  const std::size_t nv = p_.next(v), pv = p_.prev(v);
+  const Vec d = s - o, f = at(static_cast<VertexId>(nv)) - o, b = at(static_cast<VertexId>(pv)) - o;
+  if (d == Vec(0, 0)) return false;
+  const bool reflex = cross(f, b) < 0;
+  const bool inside = reflex ? !(cross(b, d) >= 0 && cross(d, f) >= 0) : cross(f, d) > 0 && cross(d, b) > 0;
+  if (!inside) return false;
+  const Segment seg(o, s);
+  for (std::size_t e = 0; e < p_.size(); ++e) {
+    const std::size_t e1 = p_.next(e);
+    if (e == v || e1 == v) continue;
+    if (CGAL::do_intersect(seg, Segment(at(static_cast<VertexId>(e)), at(static_cast<VertexId>(e1))))) return false;
+  }
+  return true;
+}
+
+bool Patterns::inside(const QPoint& s, const QPoint& t) const {
+  const Segment seg(s, t);
+  for (std::size_t e = 0; e < p_.size(); ++e)
+    if (CGAL::do_intersect(seg, Segment(at(static_cast<VertexId>(e)), at(static_cast<VertexId>(p_.next(e)))))) return false;
+  return true;
+}
+
+void Patterns::report(Counters& counters) const {
+  counters["x2_tests"] += x2_tests_;
+  counters["x2_found"] += x2_found_;
+  counters["x3_tests"] += x3_tests_;
+  counters["x3_candidates"] += x3_candidates_;
+  counters["x3_found"] += x3_found_;
+  counters["x4_tests"] += x4_tests_;
+  counters["x4_found"] += x4_found_;
+  counters["tips"] += tips_;
+}
+
+}  // namespace pd::cd

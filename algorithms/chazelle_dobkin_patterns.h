@@ -1,0 +1,162 @@
+// Pattern detection for Chazelle and Dobkin's optimal convex decomposition with Steiner points
+// (B. Chazelle, Computational Geometry and Convexity, thesis, Yale 1980 (000), Sec. 2.3.2-2.3.4):
+// the building blocks that `chazelle-dobkin-n5` (Sec. 2.3) and `chazelle-dobkin` (Sec. 2.4) share.
+//
+// An Xk-pattern (Definition 2.2) is a tree in P whose degree-1 and degree-2 nodes are notches whose
+// reflex angles its edges resolve, and whose degree-3 nodes (Steiner points) have no reflex angle. Each
+// pattern of a set of compatible patterns saves one piece over the naive decomposition (Theorem 7).
+// Y-patterns are assembled from X2- and X3-like joints between notches "adapted" to the subtrees
+// already hanging at them (Corollary 14.1); this file decides those joints:
+//   - X2 (Theorem 13): notches a, b are joined by one segment when ab is a diagonal (R(a, ab) = ab)
+//     and ab resolves the angle still open at a and at b.
+//   - X3 (Theorem 14): notches a, b, c are joined through one Steiner point S. The thesis's conditions
+//     are: a, b, c in boundary order turn the same way as the triangle abc (1); from each notch the
+//     extreme segments r_ij, l_ji towards the other two exist (2) and meet pairwise in C, A, B (3);
+//     the hexagon Q = a C b A c B has a non-empty kernel (4), and S is any point of that kernel.
+//
+// Reconstruction (the OCR text of the definitions of r_ij and l_ji is garbled and Figures 2.21 and
+// 2.22 are lost), from what the proof of Theorem 14 says the segments express:
+//   - Seen from a notch a, the boundary points a sees come in boundary order as a sweep turns
+//     counter-clockwise around a (Sec. 2.3.2, the remark on superranges, here with our
+//     counter-clockwise polygons). In an X3-pattern the extension of aS beyond S lies in the angle bSc
+//     (no angle at S is reflex), so the boundary point a sees in direction aS lies on the chain from b
+//     to c. The directions from a whose visible boundary point is on that chain form one angular
+//     interval, bounded by the direction where a's view passes from the chain a..b to the chain b..c
+//     and the one where it passes from b..c to c..a. That direction (`transition`) goes through b when
+//     a sees b, and otherwise through the notch whose window hides b: the last vertex a sees before b
+//     when the boundary turns away behind it, else the first vertex a sees after b. These are the
+//     lines of Q's edges aC and aB; with Q's other four edges, the kernel of Q is the intersection of
+//     six open half-planes, one on each side of each notch.
+//   - The segments' clipping to the notch's range (R(v_i, L_i)) and to the triangle (R(v_i, v_i v_j))
+//     becomes the open range cone of each (adapted) notch and the open triangle abc: a further seven
+//     half-planes. S is taken as the average of the vertices of this convex region (exact rationals),
+//     which lies in its interior whenever the region has positive area.
+//   - Condition 3 (C, A and B lie on the segments R(.,.), i.e. Q lies in P) is checked on the chosen
+//     S directly: its three edges are tested against every edge of P (O(n)), and only for triples
+//     that pass the O(1) half-plane test. By the sufficiency half of Theorem 14, when Q lies in P
+//     every kernel point is a Steiner point; by the necessity half, no Steiner point exists otherwise.
+//   - Steiner points whose region has no interior (patterns that exist only in degenerate position,
+//     an edge through a vertex of P or exactly along a window) are not reported.
+//   - Corollary 14.2 (a subtree's Steiner point chosen to turn its edge at z_i as far as possible):
+//     the extreme vertex of the same region, seen from z_i; it lies on the region's boundary, so it
+//     is moved 1/64 of the way towards the region's average, into the interior, before it is checked.
+//   - X4 (Theorem 15): "applying the two reductions ... takes A to the intersection of v_i r_ij and
+//     v_j l_ji": each Steiner point is put at the tip of Q facing the chain between its two notches,
+//     where each notch's edge is turned as far towards that chain as its range, its view across the
+//     other notch and the line between the two allow. The pattern exists when both tips exist with
+//     their edges in P, the segment AB lies in P, and AB leaves no reflex angle at A or at B (it lies
+//     in the cone between the extensions of A's two notch edges beyond A, and likewise at B); edges
+//     that would pass through a vertex of P are refused, as the thesis assumes no reduction meets a
+//     notch (the pattern then reduces to a Y-pattern, found as such).
+// Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains) are replaced by the
+// visibility of every vertex from each notch (algorithms/visibility.h, O(n) per notch after an
+// O(n log n) triangulation): the transitions are read from it by binary search, O(r^2 log n) in all.
+//
+// Exact: every test is an orientation on exact rationals; Steiner points are exact rationals.
+#pragma once
+
+#include "core/registry.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace pd::cd {
+
+// A notch with the two arms that bound the angle still to be resolved there: turning
+// counter-clockwise from the forward arm to the backward arm sweeps that angle. A bare notch v has
+// its polygon edges as arms (forward through v+1, backward through v-1); a notch adapted to a subtree
+// hanging at it (Corollary 14.1) has that subtree's edge as one arm.
+struct AdaptedNotch {
+  std::size_t notch;  // index into Patterns::notches()
+  QPoint forward;     // a point of the forward arm other than the notch
+  QPoint backward;    // a point of the backward arm other than the notch
+};
+
+// The directions allowed at a notch for its edge to a Steiner point: the open cone of the X with
+// orient(v, lower, X) > 0 and orient(v, upper, X) < 0, less than 180 degrees wide (or a half-plane).
+struct Joint {
+  std::size_t notch;
+  QPoint lower, upper;
+};
+
+class Patterns {
+ public:
+  // Notches and visibility from each: O(n log n + n r + r^2 log n).
+  explicit Patterns(const Polygon& p);
+
+  // The notches, in counter-clockwise (index) order.
+  const std::vector<VertexId>& notches() const { return notches_; }
+  const QPoint& notch_point(std::size_t notch) const { return exact_[notches_[notch]]; }
+  AdaptedNotch bare(std::size_t notch) const;
+
+  // The cone that resolves what is left of the angle at a: between the extensions of its arms beyond
+  // it while that angle is reflex, between the arms themselves once it is not.
+  Joint joint(const AdaptedNotch& a) const;
+  // The directions of an edge hanging at a bare notch that leave the angle on its other side reflex:
+  // on the forward side (between the forward edge and the extension of the backward edge), or on the
+  // backward side.
+  Joint forward_branch(std::size_t notch) const;
+  Joint backward_branch(std::size_t notch) const;
+
+  // Whether the segment between notches a and b is a diagonal (R(a, ab) = ab, Theorem 13). O(1).
+  bool diagonal(std::size_t a, std::size_t b) const { return sees_notch_[a * notches_.size() + b]; }
+  // Whether the segment from a towards `towards` resolves the angle still open at a: both angles it
+  // leaves are at most 180 degrees and it does not run along an arm. O(1).
+  bool resolves(const AdaptedNotch& a, const QPoint& towards) const;
+
+  // Theorem 13 on adapted notches: whether segment ab is a diagonal that resolves the angles still open
+  // at a and at b (180 degrees allowed). O(1).
+  bool x2(const AdaptedNotch& a, const AdaptedNotch& b);
+
+  // Theorem 14 on joints a, b, c at distinct notches in counter-clockwise boundary order: a Steiner
+  // point S such that Sa, Sb, Sc lie in P, leave S without a reflex angle and each lies in its joint's
+  // cone; or nothing. O(1) when the half-planes reject, O(n) otherwise. `x3` returns the average of the
+  // region's vertices; `x3_extreme` the point of the region turned furthest around a (counter-clockwise
+  // when `counter_clockwise`), moved 1/64 of the way towards that average so that it is interior
+  // (Corollary 14.2; see the header comment).
+  std::optional<QPoint> x3(const Joint& a, const Joint& b, const Joint& c);
+  std::optional<QPoint> x3_extreme(const Joint& a, const Joint& b, const Joint& c, bool counter_clockwise);
+
+  // Theorem 15, with the Steiner points at the tips of Q: the loosest X4-pattern whose first Steiner
+  // point joins notches a and b and whose second joins c and d, the four distinct and in
+  // counter-clockwise boundary order starting anywhere (so a..b and c..d are the chains the two
+  // Steiner points face). Returns the two Steiner points or nothing. O(1) after the tips, then O(n).
+  std::optional<std::pair<QPoint, QPoint>> x4(std::size_t a, std::size_t b, std::size_t c, std::size_t d);
+
+  // Whether the open segment from polygon vertex v to point s lies in P's interior, s included. O(n).
+  bool sees(VertexId v, const QPoint& s) const;
+  // Whether the closed segment st, between interior points, avoids P's boundary. O(n).
+  bool inside(const QPoint& s, const QPoint& t) const;
+
+  // Counts "x2_tests", "x2_found", "x3_tests", "x3_candidates" (past the half-planes), "x3_found",
+  // "x4_tests", "x4_found", "tips".
+  void report(Counters& counters) const;
+
+ private:
+  const QPoint& at(VertexId v) const { return exact_[v]; }
+  VertexId transition(std::size_t from, std::size_t towards) const {
+    return transition_[from * notches_.size() + towards];
+  }
+  void compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible);
+  std::vector<QPoint> x3_region(const std::array<const Joint*, 3>& joints) const;
+  std::optional<QPoint> verified(const QPoint& s, const std::array<const Joint*, 3>& joints);
+  const std::optional<QPoint>& tip(std::size_t a, std::size_t b);
+
+  const Polygon& p_;
+  std::vector<QPoint> exact_;
+  std::vector<VertexId> notches_;
+  // r x r: whether notch j's vertex is a diagonal's end seen from notch i; the vertex through which
+  // notch i's view passes across notch j's boundary position (see the header comment).
+  std::vector<char> sees_notch_;
+  std::vector<VertexId> transition_;
+  // r x r, filled on demand: the tip of Q facing the chain from notch a to notch b (Theorem 15).
+  std::vector<char> tip_known_;
+  std::vector<std::optional<QPoint>> tip_;
+  std::int64_t x2_tests_ = 0, x2_found_ = 0, x3_tests_ = 0, x3_candidates_ = 0, x3_found_ = 0;
+  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0;
+};
+
+}  // namespace pd::cd

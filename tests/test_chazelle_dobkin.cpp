@@ -1,0 +1,313 @@
+// Chazelle-Dobkin's pattern detection (algorithms/chazelle_dobkin_patterns.h) against the definitions:
+// X2 (Theorem 13) against the brute-force diagonal test and the range cones written out with input
+// predicates; X3 (Theorem 14) by building the pattern, finishing with the naive decomposition and
+// validating the result exactly (a found pattern must save one piece), and, where it reports no
+// pattern, by a grid of candidate Steiner points checked against the definition.
+// Then the program (chazelle-dobkin-n5): valid, between ceil(r/2) + 1 and min(keil-snoeyink, r + 1)
+// pieces, the known optimum of the x-pattern family (2m + 1) and of facing pairs of notches (r/2 + 1),
+// and at least as many patterns as an exhaustive search over compatible X2- and X3-patterns.
+#include "algorithms/chazelle_dobkin_patterns.h"
+#include "algorithms/keil_snoeyink.h"
+#include "algorithms/naive.h"
+#include "core/registry.h"
+#include "core/validate.h"
+#include "generators/family.h"
+#include "tests/brute_force.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
+
+#include <string>
+#include <vector>
+
+namespace pd {
+namespace {
+
+using ExactSegment = ExactKernel::Segment_2;
+
+struct Sample {
+  std::string family;
+  std::size_t n, r;
+  std::uint64_t seed;
+};
+
+std::vector<Sample> small_samples() {
+  std::vector<Sample> out;
+  for (std::uint64_t seed : {1, 2, 3}) {
+    out.push_back({"random", 14, 5, seed});
+    out.push_back({"random", 20, 7, seed});
+    out.push_back({"notch-heavy", 12, 8, seed});
+    out.push_back({"comb", 16, 6, seed});
+    out.push_back({"few-notches", 16, 6, seed});
+    out.push_back({"spiral", 16, 6, seed});
+  }
+  out.push_back({"x-pattern", 12, 3, 1});
+  out.push_back({"x-pattern", 22, 6, 1});
+  return out;
+}
+
+Polygon make(const Sample& s) { return Polygon::make(generate(s.family, s.n, s.r, s.seed)); }
+std::string label(const Sample& s) {
+  return s.family + " n=" + std::to_string(s.n) + " r=" + std::to_string(s.r) + " seed=" + std::to_string(s.seed);
+}
+
+// X lies in the closed range of notch v: the angles (v-1, v, X) and (X, v, v+1) are at most 180.
+bool in_closed_range(const Polygon& p, std::size_t v, const Point& x) {
+  return orient(p[p.prev(v)], p[v], x) >= 0 && orient(p[v], p[p.next(v)], x) >= 0;
+}
+
+TEST(ChazelleDobkinPatterns, X2IsADiagonalInBothRanges) {
+  for (const Sample& s : small_samples()) {
+    const Polygon p = make(s);
+    cd::Patterns patterns(p);
+    const auto& notches = patterns.notches();
+    for (std::size_t i = 0; i < notches.size(); ++i)
+      for (std::size_t j = 0; j < notches.size(); ++j) {
+        if (i == j) continue;
+        const VertexId a = notches[i], b = notches[j];
+        const bool expected = brute::is_diagonal(p, a, b) && in_closed_range(p, a, p[b]) && in_closed_range(p, b, p[a]);
+        EXPECT_EQ(patterns.x2(patterns.bare(i), patterns.bare(j)), expected) << label(s) << " notches " << a << ", " << b;
+      }
+  }
+}
+
+// Cuts from each of the three notches to s, then the naive decomposition for the other notches.
+Decomposition with_x3(const Polygon& p, const std::vector<VertexId>& notches, const std::array<std::size_t, 3>& triple,
+                      const QPoint& s, Counters& counters) {
+  Decomposition d;
+  const VertexId sid = static_cast<VertexId>(p.size() + d.add_steiner(s));
+  std::vector<VertexId> rest;
+  for (std::size_t k = 0; k < notches.size(); ++k) {
+    if (k == triple[0] || k == triple[1] || k == triple[2]) d.add_cut(notches[k], sid);
+    else rest.push_back(notches[k]);
+  }
+  return naive_complete(p, d, rest, counters);
+}
+
+TEST(ChazelleDobkinPatterns, XPatternTriangleHasItsX3AndNoX2) {
+  const Polygon p = Polygon::make(generate("x-pattern", 12, 3, 1));
+  cd::Patterns patterns(p);
+  ASSERT_EQ(patterns.notches().size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) {
+      if (i != j) {
+        EXPECT_FALSE(patterns.x2(patterns.bare(i), patterns.bare(j)));
+      }
+    }
+  }
+  const auto s = patterns.x3(patterns.joint(patterns.bare(0)), patterns.joint(patterns.bare(1)), patterns.joint(patterns.bare(2)));
+  ASSERT_TRUE(s.has_value());
+  Counters counters;
+  const Decomposition d = with_x3(p, patterns.notches(), {0, 1, 2}, *s, counters);
+  const Validation v = validate(p, d, Kind::Convex, true);
+  EXPECT_TRUE(v.ok) << v.reason;
+  EXPECT_EQ(pieces_of(p, d).size(), 3u);
+}
+
+// Every X3 found is a pattern: with it, the naive decomposition of the rest gives r pieces, valid.
+TEST(ChazelleDobkinPatterns, EveryX3FoundSavesOnePiece) {
+  std::size_t found = 0;
+  for (const Sample& s : small_samples()) {
+    const Polygon p = make(s);
+    cd::Patterns patterns(p);
+    const std::size_t r = patterns.notches().size();
+    for (std::size_t i = 0; i < r; ++i)
+      for (std::size_t j = i + 1; j < r; ++j)
+        for (std::size_t k = j + 1; k < r; ++k) {
+          const auto steiner = patterns.x3(patterns.joint(patterns.bare(i)), patterns.joint(patterns.bare(j)), patterns.joint(patterns.bare(k)));
+          if (!steiner) continue;
+          ++found;
+          Counters counters;
+          const Decomposition d = with_x3(p, patterns.notches(), {i, j, k}, *steiner, counters);
+          const Validation v = validate(p, d, Kind::Convex, true);
+          EXPECT_TRUE(v.ok) << label(s) << " triple " << i << "," << j << "," << k << ": " << v.reason;
+          EXPECT_EQ(pieces_of(p, d).size(), r) << label(s);
+        }
+  }
+  EXPECT_GT(found, 3u);
+}
+
+// The definition of an X3 Steiner point, written out apart from the detector: strictly inside the
+// triangle of its notches, strictly inside each notch's range, and each edge free of P's boundary.
+bool is_x3_steiner(const Polygon& p, const std::array<VertexId, 3>& v, const QPoint& s) {
+  std::array<QPoint, 3> q;
+  for (int k = 0; k < 3; ++k) q[k] = to_exact(p[v[k]]);
+  for (int k = 0; k < 3; ++k)
+    if (orient(q[k], q[(k + 1) % 3], s) <= 0) return false;
+  for (int k = 0; k < 3; ++k) {
+    const QPoint before = to_exact(p[p.prev(v[k])]), after = to_exact(p[p.next(v[k])]);
+    if (orient(before, q[k], s) <= 0 || orient(q[k], after, s) <= 0) return false;
+    const ExactSegment edge(q[k], s);
+    for (std::size_t e = 0; e < p.size(); ++e) {
+      if (e == v[k] || p.next(e) == v[k]) continue;
+      if (CGAL::do_intersect(edge, ExactSegment(to_exact(p[e]), to_exact(p[p.next(e)])))) return false;
+    }
+  }
+  return true;
+}
+
+// Where the detector finds no X3, no point of a grid over the triangle is an X3 Steiner point.
+TEST(ChazelleDobkinPatterns, NoX3MissedOnAGrid) {
+  constexpr int kGrid = 10;
+  for (const Sample& s : small_samples()) {
+    const Polygon p = make(s);
+    cd::Patterns patterns(p);
+    const auto& notches = patterns.notches();
+    const std::size_t r = notches.size();
+    for (std::size_t i = 0; i < r; ++i)
+      for (std::size_t j = i + 1; j < r; ++j)
+        for (std::size_t k = j + 1; k < r; ++k) {
+          if (patterns.x3(patterns.joint(patterns.bare(i)), patterns.joint(patterns.bare(j)), patterns.joint(patterns.bare(k)))) continue;
+          const std::array<VertexId, 3> v{notches[i], notches[j], notches[k]};
+          if (orient(p[v[0]], p[v[1]], p[v[2]]) <= 0) continue;
+          // Barycentric grid points (a, b, c) / kGrid, all strictly positive.
+          for (int a = 1; a < kGrid; ++a)
+            for (int b = 1; a + b < kGrid; ++b) {
+              const int c = kGrid - a - b;
+              const QPoint x((a * to_exact(p[v[0]]).x() + b * to_exact(p[v[1]]).x() + c * to_exact(p[v[2]]).x()) / kGrid,
+                             (a * to_exact(p[v[0]]).y() + b * to_exact(p[v[1]]).y() + c * to_exact(p[v[2]]).y()) / kGrid);
+              EXPECT_FALSE(is_x3_steiner(p, v, x)) << label(s) << " triple " << i << "," << j << "," << k;
+            }
+        }
+  }
+}
+
+// ---- the program (chazelle-dobkin-n5) ----
+
+// Runs `name` on p, expects a valid result, returns its piece count.
+std::size_t valid_pieces(const std::string& name, const Polygon& p, const std::string& where) {
+  const Algorithm* a = find_algorithm(name);
+  Counters counters;
+  const Decomposition d = a->run(p, counters);
+  const Validation v = validate(p, d, Kind::Convex, true);
+  EXPECT_TRUE(v.ok) << name << " on " << where << ": " << v.reason;
+  return pieces_of(p, d).size();
+}
+
+const std::vector<std::string>& programs() {
+  static const std::vector<std::string> names{"chazelle-dobkin-n5"};
+  return names;
+}
+
+// ceil(r/2) + 1 <= pieces <= min(diagonal-only optimum, r + 1) (Theorem 8; a diagonal decomposition is
+// a decomposition with Steiner points allowed).
+TEST(ChazelleDobkin, BetweenTheLowerBoundAndTheDiagonalOptimum) {
+  std::vector<Sample> samples = small_samples();
+  for (std::uint64_t seed : {4, 5, 6, 7}) {
+    samples.push_back({"random", 30, 10, seed});
+    samples.push_back({"notch-heavy", 20, 15, seed});
+    samples.push_back({"comb", 30, 12, seed});
+  }
+  for (const Sample& s : samples) {
+    const Polygon p = make(s);
+    const std::size_t r = p.reflex_count();
+    Counters counters;
+    const std::size_t diagonal_only = keil_snoeyink(p, counters).cuts.size() + 1;
+    for (const std::string& name : programs()) {
+      const std::size_t pieces = valid_pieces(name, p, label(s));
+      EXPECT_GE(pieces, (r + 1) / 2 + 1) << name << " on " << label(s);
+      EXPECT_LE(pieces, std::min(diagonal_only, r + 1)) << name << " on " << label(s);
+    }
+  }
+}
+
+// The x-pattern family: one Steiner point per triple of slits, 2m + 1 pieces for m triples (3 for the
+// slit triangle, where diagonals need 4).
+TEST(ChazelleDobkin, ReachesTheXPatternOptimum) {
+  for (std::size_t m : {1, 2, 3, 5})
+    for (std::uint64_t seed : {1, 2}) {
+      const std::size_t n = m == 1 ? 12 : 9 * m + 4;
+      const Polygon p = Polygon::make(generate("x-pattern", n, 3 * m, seed));
+      for (const std::string& name : programs())
+        EXPECT_EQ(valid_pieces(name, p, "x-pattern m=" + std::to_string(m)), 2 * m + 1) << name << " m=" << m;
+    }
+}
+
+// The program finds at least as many compatible patterns as an exhaustive search over the X2- and
+// X3-patterns of bare notches (pairwise disjoint, notches not interleaving round the boundary): it
+// also builds larger Y-patterns and X4-patterns, so it may find more, never fewer.
+std::size_t most_small_patterns(const std::vector<std::vector<std::size_t>>& patterns, std::size_t r) {
+  std::vector<int> owner(r, -1);
+  auto interleave = [&](const std::vector<std::size_t>& a, int b) {
+    // a and pattern b interleave when some notch of b lies strictly between two consecutive notches of
+    // a and some other notch of b outside that gap.
+    for (std::size_t x = 0; x < a.size(); ++x) {
+      const std::size_t lo = a[x], hi = a[(x + 1) % a.size()];
+      auto inside = [&](std::size_t v) { return lo < hi ? lo < v && v < hi : v > lo || v < hi; };
+      bool in = false, out = false;
+      for (std::size_t v = 0; v < r; ++v)
+        if (owner[v] == b) (inside(v) ? in : out) = true;
+      if (in && out) return true;
+    }
+    return false;
+  };
+  std::size_t best = 0;
+  std::function<void(std::size_t, std::size_t)> search = [&](std::size_t from, std::size_t chosen) {
+    best = std::max(best, chosen);
+    for (std::size_t q = from; q < patterns.size(); ++q) {
+      const auto& pattern = patterns[q];
+      bool free = true;
+      for (std::size_t v : pattern) free = free && owner[v] < 0;
+      for (int b = 0; free && b < static_cast<int>(patterns.size()); ++b)
+        if (std::find(owner.begin(), owner.end(), b) != owner.end()) free = !interleave(pattern, b);
+      if (!free) continue;
+      for (std::size_t v : pattern) owner[v] = static_cast<int>(q);
+      search(q + 1, chosen + 1);
+      for (std::size_t v : pattern) owner[v] = -1;
+    }
+  };
+  search(0, 0);
+  return best;
+}
+
+TEST(ChazelleDobkin, FindsAtLeastTheBestSetOfX2AndX3Patterns) {
+  std::size_t samples_with_patterns = 0;
+  for (const Sample& s : small_samples()) {
+    const Polygon p = make(s);
+    cd::Patterns patterns(p);
+    const std::size_t r = patterns.notches().size();
+    if (r > 9) continue;
+    std::vector<std::vector<std::size_t>> small;
+    for (std::size_t i = 0; i < r; ++i)
+      for (std::size_t j = i + 1; j < r; ++j) {
+        if (patterns.x2(patterns.bare(i), patterns.bare(j))) small.push_back({i, j});
+        for (std::size_t k = j + 1; k < r; ++k)
+          if (patterns.x3(patterns.joint(patterns.bare(i)), patterns.joint(patterns.bare(j)), patterns.joint(patterns.bare(k))))
+            small.push_back({i, j, k});
+      }
+    const std::size_t expected = most_small_patterns(small, r);
+    samples_with_patterns += expected > 0;
+    for (const std::string& name : programs()) {
+      const std::size_t pieces = valid_pieces(name, p, label(s));
+      EXPECT_LE(pieces, r + 1 - expected) << name << " on " << label(s);
+    }
+  }
+  EXPECT_GT(samples_with_patterns, 5u);
+}
+
+// A strip with m pairs of V-shaped dents facing each other across it: one segment resolves each pair,
+// so r/2 + 1 = m + 1 pieces, the lower bound.
+Polygon facing_pairs(int m) {
+  std::vector<Point> v;
+  v.emplace_back(0, 0);
+  for (int k = 0; k < m; ++k) v.emplace_back(10 * k + 3, 0), v.emplace_back(10 * k + 5, 3), v.emplace_back(10 * k + 7, 0);
+  v.emplace_back(10 * m, 0);
+  v.emplace_back(10 * m, 10);
+  for (int k = m; k-- > 0;) v.emplace_back(10 * k + 7, 10), v.emplace_back(10 * k + 5, 7), v.emplace_back(10 * k + 3, 10);
+  v.emplace_back(0, 10);
+  return Polygon::make(v);
+}
+
+TEST(ChazelleDobkin, ResolvesFacingPairsWithOneSegmentEach) {
+  for (int m : {1, 2, 4, 7}) {
+    const Polygon p = facing_pairs(m);
+    ASSERT_EQ(p.reflex_count(), static_cast<std::size_t>(2 * m));
+    for (const std::string& name : programs())
+      EXPECT_EQ(valid_pieces(name, p, "facing pairs m=" + std::to_string(m)), static_cast<std::size_t>(m + 1)) << name;
+  }
+}
+
+}  // namespace
+}  // namespace pd
