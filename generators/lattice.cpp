@@ -106,4 +106,76 @@ std::vector<Point> centred_points(const std::vector<Vec>& vertices) {
   return points;
 }
 
+Vec primitive_direction(Vec v) {
+  const std::int64_t g = std::gcd(v.x, v.y);
+  return {v.x / g, v.y / g};
+}
+
+namespace {
+
+constexpr std::int64_t kArcMiddle = 4;  // arc middles (m, +-1) keep |b| < a/3
+
+// Each bulging edge's length in steps of its primitive direction; 0 for the edges that do not bulge.
+std::vector<std::int64_t> bulge_steps(const Outline& outline) {
+  const std::size_t size = outline.vertices.size();
+  std::vector<std::int64_t> steps(size, 0);
+  for (std::size_t i = 0; i < size; ++i) {
+    const Vec d = outline.vertices[(i + 1) % size] - outline.vertices[i];
+    if (outline.bulges[i]) steps[i] = std::gcd(d.x, d.y);
+  }
+  return steps;
+}
+
+// `extra` arc vertices per edge, in proportion to the edges' steps, the remainder to random edges.
+std::vector<std::size_t> share_out(const std::vector<std::int64_t>& steps, std::size_t extra, Rng& rng) {
+  const std::int64_t total = std::accumulate(steps.begin(), steps.end(), std::int64_t{0});
+  std::vector<std::size_t> arc(steps.size(), 0), bulging;
+  std::size_t given = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (steps[i] == 0) continue;
+    arc[i] = static_cast<std::size_t>(static_cast<__int128>(extra) * steps[i] / total);
+    given += arc[i];
+    bulging.push_back(i);
+  }
+  const std::vector<char> one_more = random_flags(bulging.size(), extra - given, rng);
+  for (std::size_t k = 0; k < bulging.size(); ++k) arc[bulging[k]] += static_cast<std::size_t>(one_more[k]);
+  return arc;
+}
+
+}  // namespace
+
+std::vector<Vec> padded_outline(const Outline& outline, std::size_t n, Rng& rng) {
+  const std::size_t size = outline.vertices.size();
+  const std::vector<std::int64_t> steps = bulge_steps(outline);
+  const std::vector<std::size_t> arc = share_out(steps, n - size, rng);
+
+  const std::size_t most = *std::max_element(arc.begin(), arc.end());
+  const std::vector<Vec> reps = shortest_primitive_vectors(
+      most / 2, [](std::int64_t a, std::int64_t b) { return b >= 1 && 3 * b < a; }, rng);
+  // Scale the outline until every arc fits its edge.
+  std::int64_t scale = 1;
+  for (std::size_t i = 0; i < size; ++i) {
+    if (arc[i] == 0) continue;
+    const std::int64_t need = convex_arc_min_length(arc[i], reps, kArcMiddle);
+    scale = std::max(scale, (need + steps[i] - 1) / steps[i]);
+  }
+
+  std::vector<Vec> vertices;
+  vertices.reserve(n);
+  for (std::size_t i = 0; i < size; ++i) {
+    Vec at = scale * outline.vertices[i];
+    vertices.push_back(at);
+    if (arc[i] == 0) continue;
+    // Local (a, b) is a along the edge plus b along its left normal: negative b bulges outward.
+    const Vec along = primitive_direction(outline.vertices[(i + 1) % size] - outline.vertices[i]);
+    const Vec left{-along.y, along.x};
+    const std::vector<Vec> bulge = convex_arc(arc[i], scale * steps[i], reps, kArcMiddle);
+    for (std::size_t k = 0; k + 1 < bulge.size(); ++k) {
+      at = at + bulge[k].x * along + bulge[k].y * left;
+      vertices.push_back(at);
+    }
+  }
+  return vertices;
+}
+
 }  // namespace pd::gen

@@ -113,4 +113,32 @@ std::vector<Vec> convex_arc(std::size_t interior, std::int64_t length, const std
 // Points for the vertices, translated so that the bounding box is centred on the origin.
 std::vector<Point> centred_points(const std::vector<Vec>& vertices);
 
+// A polygon template, counter-clockwise, whose chosen edges may bulge outward as convex arcs to take
+// extra vertices (x-pattern, x2-pairs). bulges[i] says whether edge i -> i+1 may bulge.
+struct Outline {
+  std::vector<Vec> vertices;
+  std::vector<char> bulges;
+
+  void corner(Vec v) {
+    vertices.push_back(v);
+    bulges.push_back(1);
+  }
+  // A thin notch: mouth_start, the reflex tip, mouth_end; only the edge leaving the mouth may bulge.
+  void slit(Vec mouth_start, Vec tip, Vec mouth_end) {
+    vertices.insert(vertices.end(), {mouth_start, tip, mouth_end});
+    bulges.insert(bulges.end(), {0, 0, 1});
+  }
+};
+
+// The primitive lattice vector along v (v divided by the gcd of its coordinates).
+Vec primitive_direction(Vec v);
+
+// The outline with n - outline.vertices.size() extra vertices shared out among the bulging edges in
+// proportion to their lengths (the remainder to random ones), each edge's share as a convex arc bulging
+// outward within 18.5 degrees of the edge (local vectors (a, b) with |b| < a/3, arc middles (m, +-1),
+// m >= 4), the outline scaled up by the least integer that lets every arc fit its edge. Every vertex
+// where an arc starts or ends must turn left by more than 37 degrees in the outline, so that it stays
+// convex. The extra vertices are placed by `rng`.
+std::vector<Vec> padded_outline(const Outline& outline, std::size_t n, Rng& rng);
+
 }  // namespace pd::gen

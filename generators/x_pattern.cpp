@@ -35,7 +35,6 @@ namespace {
 using gen::Vec;
 
 constexpr std::size_t kMaxXVertices = 1'000'000;
-constexpr std::int64_t kArcMiddle = 4;  // arc middles (m, +-1) keep |b| < a/3
 
 std::size_t min_vertices(std::size_t triples) { return triples == 1 ? 12 : 9 * triples + 4; }
 
@@ -47,45 +46,28 @@ std::optional<std::string> x_pattern_infeasible(std::size_t n, std::size_t r) {
   return std::nullopt;
 }
 
-// The unpadded polygon, counter-clockwise; bulges[i] says whether edge i -> i+1 may bulge.
-struct Outline {
-  std::vector<Vec> vertices;
-  std::vector<char> bulges;
-
-  void corner(Vec v) {
-    vertices.push_back(v);
-    bulges.push_back(1);
-  }
-  // A slit in the side running along primitive direction e, around M, aimed at G.
-  void slit(Vec m, Vec e, Vec g) {
-    const Vec tip{(m.x + g.x) / 2, (m.y + g.y) / 2};
-    vertices.insert(vertices.end(), {m - e, tip, m + e});
-    bulges.insert(bulges.end(), {0, 0, 1});
-  }
-};
-
-Vec primitive_direction(Vec v) {
-  const std::int64_t g = std::gcd(v.x, v.y);
-  return {v.x / g, v.y / g};
+// A slit in the side running along primitive direction e, around M, aimed at G.
+void add_slit(gen::Outline& outline, Vec m, Vec e, Vec g) {
+  outline.slit(m - e, {(m.x + g.x) / 2, (m.y + g.y) / 2}, m + e);
 }
 
-Outline triangle() {
+gen::Outline triangle() {
   // 16 times the nearly equilateral (0, 0), (96, 0), (48, 84): the midpoints, the centroid and the
   // points halfway between are lattice points, and at this size each slit (mouth half-width |e| <= 8.1,
   // depth >= 222) opens by at most 2.1 degrees either side of its axis.
   const Vec a{0, 0}, b{1536, 0}, c{768, 1344};
   const Vec g{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
-  Outline outline;
+  gen::Outline outline;
   const Vec corners[3] = {a, b, c};
   for (int i = 0; i < 3; ++i) {
     const Vec p = corners[i], q = corners[(i + 1) % 3];
     outline.corner(p);
-    outline.slit({(p.x + q.x) / 2, (p.y + q.y) / 2}, primitive_direction(q - p), g);
+    add_slit(outline, {(p.x + q.x) / 2, (p.y + q.y) / 2}, gen::primitive_direction(q - p), g);
   }
   return outline;
 }
 
-Outline strip(std::size_t triples) {
+gen::Outline strip(std::size_t triples) {
   // Slits reach halfway to G: depth 16 (16 sqrt 2 at 45 degrees) for a mouth half-width of 1, so each
   // opens by under 4 degrees either side of its axis; a triple spans 64, and triples are 96 apart.
   constexpr std::int64_t kHeight = 64, kReach = 32, kSpacing = 96, kMargin = 64;
@@ -94,15 +76,15 @@ Outline strip(std::size_t triples) {
   };
   const std::int64_t width = centre(triples - 1).x + kMargin;
   // Triple j puts its single slit on the top side when j is even, on the bottom when odd.
-  Outline outline;
+  gen::Outline outline;
   outline.corner({0, 0});
   for (std::size_t j = 0; j < triples; ++j) {
     const Vec g = centre(j);
     if (j % 2 == 0) {
-      outline.slit({g.x - kReach, 0}, {1, 0}, g);
-      outline.slit({g.x + kReach, 0}, {1, 0}, g);
+      add_slit(outline, {g.x - kReach, 0}, {1, 0}, g);
+      add_slit(outline, {g.x + kReach, 0}, {1, 0}, g);
     } else {
-      outline.slit({g.x, 0}, {1, 0}, g);
+      add_slit(outline, {g.x, 0}, {1, 0}, g);
     }
   }
   outline.corner({width, 0});
@@ -110,77 +92,19 @@ Outline strip(std::size_t triples) {
   for (std::size_t j = triples; j-- > 0;) {
     const Vec g = centre(j);
     if (j % 2 == 0) {
-      outline.slit({g.x, kHeight}, {-1, 0}, g);
+      add_slit(outline, {g.x, kHeight}, {-1, 0}, g);
     } else {
-      outline.slit({g.x + kReach, kHeight}, {-1, 0}, g);
-      outline.slit({g.x - kReach, kHeight}, {-1, 0}, g);
+      add_slit(outline, {g.x + kReach, kHeight}, {-1, 0}, g);
+      add_slit(outline, {g.x - kReach, kHeight}, {-1, 0}, g);
     }
   }
   outline.corner({0, kHeight});
   return outline;
 }
 
-// Each bulging edge's length in steps of its primitive direction; 0 for the slits' edges.
-std::vector<std::int64_t> bulge_steps(const Outline& outline) {
-  const std::size_t size = outline.vertices.size();
-  std::vector<std::int64_t> steps(size, 0);
-  for (std::size_t i = 0; i < size; ++i) {
-    const Vec d = outline.vertices[(i + 1) % size] - outline.vertices[i];
-    if (outline.bulges[i]) steps[i] = std::gcd(d.x, d.y);
-  }
-  return steps;
-}
-
-// `extra` arc vertices per edge, in proportion to the edges' steps, the remainder to random edges.
-std::vector<std::size_t> share_out(const std::vector<std::int64_t>& steps, std::size_t extra, Rng& rng) {
-  const std::int64_t total = std::accumulate(steps.begin(), steps.end(), std::int64_t{0});
-  std::vector<std::size_t> arc(steps.size(), 0), bulging;
-  std::size_t given = 0;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    if (steps[i] == 0) continue;
-    arc[i] = static_cast<std::size_t>(static_cast<__int128>(extra) * steps[i] / total);
-    given += arc[i];
-    bulging.push_back(i);
-  }
-  const std::vector<char> one_more = gen::random_flags(bulging.size(), extra - given, rng);
-  for (std::size_t k = 0; k < bulging.size(); ++k) arc[bulging[k]] += static_cast<std::size_t>(one_more[k]);
-  return arc;
-}
-
 std::vector<Point> make_x_pattern(std::size_t n, std::size_t r, std::uint64_t seed) {
   Rng rng(seed);
-  const Outline outline = r == 3 ? triangle() : strip(r / 3);
-  const std::size_t size = outline.vertices.size();
-  const std::vector<std::int64_t> steps = bulge_steps(outline);
-  const std::vector<std::size_t> arc = share_out(steps, n - size, rng);
-
-  const std::size_t most = *std::max_element(arc.begin(), arc.end());
-  const std::vector<Vec> reps = gen::shortest_primitive_vectors(
-      most / 2, [](std::int64_t a, std::int64_t b) { return b >= 1 && 3 * b < a; }, rng);
-  // Scale the outline until every arc fits its edge.
-  std::int64_t scale = 1;
-  for (std::size_t i = 0; i < size; ++i) {
-    if (arc[i] == 0) continue;
-    const std::int64_t need = gen::convex_arc_min_length(arc[i], reps, kArcMiddle);
-    scale = std::max(scale, (need + steps[i] - 1) / steps[i]);
-  }
-
-  std::vector<Vec> vertices;
-  vertices.reserve(n);
-  for (std::size_t i = 0; i < size; ++i) {
-    Vec at = scale * outline.vertices[i];
-    vertices.push_back(at);
-    if (arc[i] == 0) continue;
-    // Local (a, b) is a along the edge plus b along its left normal: negative b bulges outward.
-    const Vec along = primitive_direction(outline.vertices[(i + 1) % size] - outline.vertices[i]);
-    const Vec left{-along.y, along.x};
-    const std::vector<Vec> bulge = gen::convex_arc(arc[i], scale * steps[i], reps, kArcMiddle);
-    for (std::size_t k = 0; k + 1 < bulge.size(); ++k) {
-      at = at + bulge[k].x * along + bulge[k].y * left;
-      vertices.push_back(at);
-    }
-  }
-  return gen::centred_points(vertices);
+  return gen::centred_points(gen::padded_outline(r == 3 ? triangle() : strip(r / 3), n, rng));
 }
 
 Family x_pattern_family() {

@@ -16,6 +16,7 @@ namespace {
 
 constexpr std::size_t kMaxN = 2'000'000;
 constexpr std::size_t kMaxXPatternN = 1'000'000;
+constexpr std::size_t kMaxX2PairsN = 1'000'000;
 
 struct IntPoint {
   std::int64_t x, y;
@@ -142,6 +143,8 @@ const std::map<std::string, std::function<bool(std::size_t, std::size_t)>>& docu
        [](std::size_t n, std::size_t r) {
          return n <= kMaxXPatternN && r >= 3 && r % 3 == 0 && n >= (r == 3 ? 12 : 3 * r + 4);
        }},
+      {"x2-pairs",
+       [](std::size_t n, std::size_t r) { return n <= kMaxX2PairsN && r >= 2 && r % 2 == 0 && n >= 3 * r + 4; }},
   };
   return ranges;
 }
@@ -171,7 +174,7 @@ TEST(Generators, RegistryListsTheFamiliesSortedByName) {
   std::vector<std::string> names;
   for (const Family& f : families()) names.push_back(f.name);
   EXPECT_EQ(names, (std::vector<std::string>{"comb", "convex", "few-notches", "notch-heavy", "random",
-                                             "spiral", "x-pattern"}));
+                                             "spiral", "x-pattern", "x2-pairs"}));
   ASSERT_NE(find_family("spiral"), nullptr);
   EXPECT_EQ(find_family("spiral")->name, "spiral");
   EXPECT_EQ(find_family("no-such"), nullptr);
@@ -193,7 +196,7 @@ TEST(Generators, UnknownFamilyNamesTheFamilies) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "unknown family hexagon; families: comb, convex, few-notches, notch-heavy, random, spiral, "
-              "x-pattern");
+              "x-pattern, x2-pairs");
   }
 }
 
@@ -312,6 +315,8 @@ TEST(Generators, ChecksumsArePinned) {
       {"notch-heavy", 700, 500, 4, 0x06ef5b2316f4e86cULL},
       {"x-pattern", 12, 3, 1, 0x5675edbaae52109cULL},
       {"x-pattern", 500, 30, 8, 0x68a8b6a2ca73f126ULL},
+      {"x2-pairs", 10, 2, 1, 0x0d73b324820f56ccULL},
+      {"x2-pairs", 600, 60, 3, 0x8d7b5fdb215f625cULL},
   };
   for (const Case& c : cases) {
     EXPECT_EQ(fnv1a(generate(c.family, c.n, c.r, c.seed)), c.fnv)
@@ -338,6 +343,8 @@ TEST(Generators, MillionVertices) {
   expect_large_valid("spiral", 1'000'000, 499'998);
   expect_large_valid("comb", 1'000'000, 499'998);
   expect_large_valid("notch-heavy", 1'000'000, 999'997);
+  expect_large_valid("x2-pairs", 1'000'000, 2);
+  expect_large_valid("x2-pairs", 1'000'000, 333'332);
 }
 
 }  // namespace
