@@ -2,9 +2,14 @@
 JOBS ?= $(shell nproc)
 BUILD := build
 TEST_BUILD := build-test
+SANITIZE_BUILD := build-sanitize
+FUZZ_SECONDS ?= 600
+# The sanitizer build: clang, AddressSanitizer + UndefinedBehaviorSanitizer, the test suite and the
+# libFuzzer targets (fuzz/) in one build directory.
+SANITIZE_CONFIG := -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Test -DPD_TESTS=ON -DPD_SANITIZE=ON -DPD_FUZZ=ON
 PY := /usr/bin/python3
 
-.PHONY: all deps build test bench paper clean
+.PHONY: all deps build test sanitize-build fuzz bench paper clean
 
 all: build
 
@@ -15,10 +20,24 @@ build: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
+# The assertions build's tests, then the same tests under the sanitizers and each fuzz target for 30 s.
 test: deps
 	@cmake -S . -B $(TEST_BUILD) -DCMAKE_BUILD_TYPE=Test -DPD_TESTS=ON >/dev/null
 	@cmake --build $(TEST_BUILD) -j $(JOBS)
 	@cd $(TEST_BUILD) && ctest --output-on-failure -j $(JOBS)
+	@cmake -S . -B $(SANITIZE_BUILD) $(SANITIZE_CONFIG) -DPD_FUZZ_SECONDS=30 -DPD_FUZZ_SEED=1 >/dev/null
+	@$(MAKE) --no-print-directory sanitize-build
+	@cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS)
+
+sanitize-build:
+	@cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target polydecomp polydecomp-tests fuzz-targets
+
+# Each fuzz target for FUZZ_SECONDS (default 600) from a random seed; findings go to
+# build-sanitize/fuzz-findings/ (replay one: build-sanitize/fuzz-run FILE).
+fuzz: deps
+	@cmake -S . -B $(SANITIZE_BUILD) $(SANITIZE_CONFIG) -DPD_FUZZ_SECONDS=$(FUZZ_SECONDS) -DPD_FUZZ_SEED=0 >/dev/null
+	@$(MAKE) --no-print-directory sanitize-build
+	@cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -R '^fuzz-'
 
 # A sweep resumes after the keys its journal (results/SWEEP.journal.jsonl) already holds; delete the
 # journal to measure everything again.
@@ -29,4 +48,4 @@ paper: build
 	@$(PY) analysis/sweep.py --sweep paper --build $(BUILD) --results results
 
 clean:
-	rm -rf $(BUILD) $(TEST_BUILD)
+	rm -rf $(BUILD) $(TEST_BUILD) $(SANITIZE_BUILD)

@@ -34,6 +34,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -269,7 +270,9 @@ class Decomposer {
   // Where, in the line's sequence of vertices [first end, inner..., second end], the first vertex
   // not before `h` is, and whether it is at h.
   std::pair<std::size_t, bool> locate(LineRef line, const XPoint& h) {
-    const auto [e0, e1] = ends(line);
+    // Not a structured binding: the lambdas below capture the ends, which C++17 does not allow of one.
+    VertexId e0, e1;
+    std::tie(e0, e1) = ends(line);
     const std::vector<VertexId>& in = inner(line);
     auto before_h = [&](VertexId w) { return dot_sign(at(w), h, at(e0), at(e1)) > 0; };
     if (!before_h(e0)) return {0, true};
@@ -280,7 +283,8 @@ class Decomposer {
 
   void finish_shot() {
     const Hit hit = *best_;
-    const auto [e0, e1] = ends(hit.line);
+    VertexId e0, e1;  // not a structured binding: captured below
+    std::tie(e0, e1) = ends(hit.line);
     const auto [j, at_vertex] = locate(hit.line, hit.point);
     // The sub-edge of the line the perturbed ray crosses: (lo, hi) in the line's vertex sequence.
     const std::size_t lo = at_vertex && hit.left == e1 ? j : j - 1;

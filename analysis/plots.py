@@ -207,14 +207,17 @@ def _coordinate(v):
 
 
 def _decompose(polydecomp, algorithm, polygon_file):
-    """The `run --json` object, or an {"error": ...} object."""
+    """The `run --json` object, or an {"error": ...} object; `run --max-seconds` stops a slow algorithm,
+    and its panel says it was skipped."""
+    command = [polydecomp, "run", "--algorithm", algorithm, "--input", polygon_file, "--json",
+               "--max-seconds", str(GALLERY_TIMEOUT)]
     try:
-        done = subprocess.run([polydecomp, "run", "--algorithm", algorithm, "--input", polygon_file, "--json"],
-                              capture_output=True, text=True, timeout=GALLERY_TIMEOUT)
+        done = subprocess.run(command, capture_output=True, text=True, timeout=2 * GALLERY_TIMEOUT)
     except subprocess.TimeoutExpired:
-        return {"error": "timed out"}
+        return {"error": "skipped (timeout)"}
     if done.returncode != 0:
-        return {"error": done.stderr.strip() or "exit status {}".format(done.returncode)}
+        why = done.stderr.strip() or "exit status {}".format(done.returncode)
+        return {"error": "skipped (timeout): " + why if why.endswith("(--max-seconds)") else why}
     return json.loads(done.stdout)
 
 

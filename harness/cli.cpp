@@ -1,8 +1,8 @@
 // The polydecomp command line: list | generate | run | cut (see CONTRACT.md).
 //
-// Exit status: 0 success, 2 bad usage, 3 bad polygon, 4 an algorithm failed. Every failure prints one
-// line on stderr beginning "error:" and nothing on stdout; output is assembled completely before any of
-// it is written, so a failure never leaves partial output.
+// Exit status: 0 success, 2 bad usage, 3 bad polygon, 4 an algorithm failed (or `run --max-seconds`
+// stopped it). Every failure prints one line on stderr beginning "error:" and nothing on stdout; output
+// is assembled completely before any of it is written, so a failure never leaves partial output.
 #include "algorithms/polygon_cutting.h"
 #include "core/io.h"
 #include "core/json.h"
@@ -12,9 +12,16 @@
 
 #include <boost/program_options.hpp>
 
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -36,7 +43,7 @@ struct Exit {
 const char* kUsageText =
     "usage: polydecomp list [--json]\n"
     "       polydecomp generate --family F --n N [--reflex R] [--seed S] [--format txt|wkt|geojson] [-o FILE]\n"
-    "       polydecomp run --algorithm A --input FILE [--json] [--svg FILE] [--no-validate]\n"
+    "       polydecomp run --algorithm A --input FILE [--json] [--svg FILE] [--no-validate] [--max-seconds S]\n"
     "       polydecomp cut --input FILE [--weights reflex|all|FILE] [--vertical] [--json]\n";
 
 po::variables_map parse(const std::vector<std::string>& args, const po::options_description& opts) {
@@ -121,55 +128,153 @@ int cmd_generate(const std::vector<std::string>& args) {
   return 0;
 }
 
-int cmd_run(const std::vector<std::string>& args) {
-  po::options_description opts;
-  opts.add_options()("algorithm", po::value<std::string>()->required(), "algorithm")(
-      "input", po::value<std::string>()->required(), "polygon file")("json", "JSON output")(
-      "svg", po::value<std::string>(), "SVG figure")("no-validate", "skip validation");
-  const auto vm = parse(args, opts);
-  const std::string name = vm["algorithm"].as<std::string>();
-  const Algorithm* algo = find_algorithm(name);
-  if (!algo) usage("unknown algorithm '" + name + "'; 'polydecomp list' names them");
-  std::optional<Polygon> polygon;
-  try {
-    polygon = Polygon::make(read_polygon_file(vm["input"].as<std::string>()));
-  } catch (const PolygonError& e) {
-    throw Exit{kBadPolygon, e.what()};
-  }
+// What `run` prints: the report on stdout and the SVG figure (empty without --svg).
+struct RunOutput {
+  std::string out, svg;
+};
+
+RunOutput run_output(const Algorithm& algo, const Polygon& polygon, bool json, bool validate_result, bool svg) {
   Counters counters;
   Decomposition d;
   const auto start = std::chrono::steady_clock::now();
   try {
-    d = algo->run(*polygon, counters);
+    d = algo.run(polygon, counters);
   } catch (const std::exception& e) {
-    throw Exit{kAlgorithmFailed, name + " failed: " + e.what()};
+    throw Exit{kAlgorithmFailed, algo.name + " failed: " + e.what()};
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<Piece> pieces;
   std::optional<bool> valid;
   std::string reason;
   try {
-    pieces = pieces_of(*polygon, d);
+    pieces = pieces_of(polygon, d);
   } catch (const std::invalid_argument& e) {
     valid = false;
     reason = e.what();
   }
-  if (!vm.count("no-validate") && !valid) {
-    const Validation v = validate_pieces(*polygon, exact_points(*polygon, d), pieces, algo->kind, algo->steiner);
+  if (validate_result && !valid) {
+    const Validation v = validate_pieces(polygon, exact_points(polygon, d), pieces, algo.kind, algo.steiner);
     valid = v.ok;
     reason = v.reason;
   }
-  std::string out;
-  if (vm.count("json")) {
-    out = run_json({name, &*polygon, &d, &pieces, valid, seconds, &counters});
+  RunOutput result;
+  if (json) {
+    result.out = run_json({algo.name, &polygon, &d, &pieces, valid, seconds, &counters});
   } else {
-    out = name + ": n=" + std::to_string(polygon->size()) + " reflex=" + std::to_string(polygon->reflex_count()) +
-          " pieces=" + std::to_string(pieces.size()) + " steiner=" + std::to_string(d.steiner.size()) +
-          (valid ? std::string(" valid=") + (*valid ? "yes" : "NO (" + reason + ")") : "") +
-          " seconds=" + double_text(seconds) + "\n";
+    result.out = algo.name + ": n=" + std::to_string(polygon.size()) + " reflex=" + std::to_string(polygon.reflex_count()) +
+                 " pieces=" + std::to_string(pieces.size()) + " steiner=" + std::to_string(d.steiner.size()) +
+                 (valid ? std::string(" valid=") + (*valid ? "yes" : "NO (" + reason + ")") : "") +
+                 " seconds=" + double_text(seconds) + "\n";
   }
-  if (vm.count("svg")) emit(run_svg(*polygon, d, pieces, name), vm["svg"].as<std::string>());
-  emit(out, "");
+  if (svg) result.svg = run_svg(polygon, d, pieces, algo.name);
+  return result;
+}
+
+// --max-seconds: `compute` runs in a forked child, which sends back its output (or its Exit) through a
+// pipe; at the deadline the parent kills the child and fails with one error line. A separate process is
+// the one safe way to stop an algorithm anywhere (inside GMP, inside CGAL) without its cooperation, and
+// nothing is written until the child has finished, so a stopped run leaves no partial output.
+// The message format: "STATUS\n" then, for status 0, "LENGTH\n" + out + svg; otherwise the Exit message.
+std::string encode(const RunOutput& r) { return "0\n" + std::to_string(r.out.size()) + "\n" + r.out + r.svg; }
+std::string encode(const Exit& e) { return std::to_string(e.status) + "\n" + e.message; }
+
+RunOutput decode(const std::string& message) {
+  std::size_t at = message.find('\n');
+  const int status = std::stoi(message.substr(0, at));
+  std::string rest = message.substr(at + 1);
+  if (status != 0) throw Exit{status, rest};
+  at = rest.find('\n');
+  const std::size_t length = std::stoul(rest.substr(0, at));
+  return {rest.substr(at + 1, length), rest.substr(at + 1 + length)};
+}
+
+void write_all(int fd, const std::string& text) {
+  for (std::size_t done = 0; done < text.size();) {
+    const ssize_t k = ::write(fd, text.data() + done, text.size() - done);
+    if (k <= 0 && errno != EINTR) return;
+    if (k > 0) done += static_cast<std::size_t>(k);
+  }
+}
+
+// Reads the pipe to its end, or returns false at the deadline.
+bool read_until(int fd, std::chrono::steady_clock::time_point deadline, std::string& message) {
+  char buffer[1 << 16];
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return false;
+    pollfd wait_for{fd, POLLIN, 0};
+    const int ready = ::poll(&wait_for, 1, static_cast<int>(std::min<std::int64_t>(left.count(), 1 << 30)));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0) return false;
+    const ssize_t k = ::read(fd, buffer, sizeof buffer);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) return true;
+    message.append(buffer, static_cast<std::size_t>(k));
+  }
+}
+
+RunOutput with_deadline(const std::string& name, double max_seconds, const std::function<RunOutput()>& compute) {
+  int fds[2];
+  if (::pipe(fds) != 0) throw Exit{kAlgorithmFailed, "cannot create a pipe for --max-seconds"};
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                               std::chrono::duration<double>(max_seconds));
+  std::cout.flush();
+  const pid_t child = ::fork();
+  if (child < 0) throw Exit{kAlgorithmFailed, "cannot fork for --max-seconds"};
+  if (child == 0) {
+    ::close(fds[0]);
+    std::string message;
+    try {
+      message = encode(compute());
+    } catch (const Exit& e) {
+      message = encode(e);
+    } catch (const std::exception& e) {
+      message = encode(Exit{kAlgorithmFailed, name + " failed: " + e.what()});
+    }
+    write_all(fds[1], message);
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  std::string message;
+  const bool finished = read_until(fds[0], deadline, message);
+  ::close(fds[0]);
+  if (!finished) ::kill(child, SIGKILL);
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!finished) throw Exit{kAlgorithmFailed, name + " stopped after " + double_text(max_seconds) + " s (--max-seconds)"};
+  if (WIFSIGNALED(status)) throw Exit{kAlgorithmFailed, name + " crashed (signal " + std::to_string(WTERMSIG(status)) + ")"};
+  if (message.empty()) throw Exit{kAlgorithmFailed, name + " ended without a result"};
+  return decode(message);
+}
+
+int cmd_run(const std::vector<std::string>& args) {
+  po::options_description opts;
+  opts.add_options()("algorithm", po::value<std::string>()->required(), "algorithm")(
+      "input", po::value<std::string>()->required(), "polygon file")("json", "JSON output")(
+      "svg", po::value<std::string>(), "SVG figure")("no-validate", "skip validation")(
+      "max-seconds", po::value<double>(), "stop the algorithm (and validation) after this many seconds");
+  const auto vm = parse(args, opts);
+  const std::string name = vm["algorithm"].as<std::string>();
+  const Algorithm* algo = find_algorithm(name);
+  if (!algo) usage("unknown algorithm '" + name + "'; 'polydecomp list' names them");
+  std::optional<double> max_seconds;
+  if (vm.count("max-seconds")) {
+    max_seconds = vm["max-seconds"].as<double>();
+    if (!(*max_seconds > 0) || *max_seconds > 1e9) usage("--max-seconds takes a number of seconds above 0");
+  }
+  std::optional<Polygon> polygon;
+  try {
+    polygon = Polygon::make(read_polygon_file(vm["input"].as<std::string>()));
+  } catch (const PolygonError& e) {
+    throw Exit{kBadPolygon, e.what()};
+  }
+  const auto compute = [&] {
+    return run_output(*algo, *polygon, vm.count("json") > 0, vm.count("no-validate") == 0, vm.count("svg") > 0);
+  };
+  const RunOutput result = max_seconds ? with_deadline(name, *max_seconds, compute) : compute();
+  if (vm.count("svg")) emit(result.svg, vm["svg"].as<std::string>());
+  emit(result.out, "");
   return 0;
 }
 

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages polydecomp needs, if any is missing. Idempotent; silent when all is there.
 set -euo pipefail
-packages=(build-essential cmake git libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+# clang and its sanitizer and libFuzzer runtimes (libclang-rt-14-dev, only recommended by clang) build
+# the sanitizer build of `make test` and `make fuzz`, against the same libstdc++ as g++.
+packages=(build-essential clang libclang-rt-14-dev cmake git libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           libboost-program-options-dev libbenchmark-dev libgtest-dev googletest
           python3 python3-matplotlib python3-numpy)
 missing=()

@@ -5,9 +5,9 @@
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"
-#include "harness/bound_expr.h"
 #include "tests/fixtures.h"
 #include "tests/independent_check.h"
+#include "tests/reliability.h"
 
 #include <gtest/gtest.h>
 
@@ -17,15 +17,10 @@
 namespace pd {
 namespace {
 
-bool is_peer(const Algorithm& a) { return a.name.rfind("cgal-", 0) == 0; }
+using reliability::is_peer;
 
-// Whether a polygon of n vertices and r notches is within the test suite's work budget for `a`: under
-// its size ceiling, and its claimed bound in n and r (the ceiling alone ignores r, and an n*r^2
-// program on a real-world ring with r = n/2 is cubic) at most kTestWork.
 bool within_test_budget(const Algorithm& a, std::size_t n, std::size_t r) {
-  constexpr double kTestWork = 2e8;
-  const auto bound = BoundExpr::parse(a.time_bound);
-  return n <= a.size_ceiling && (!bound || (*bound)(static_cast<double>(n), static_cast<double>(r)) <= kTestWork);
+  return reliability::within_work(a, n, r, reliability::kTestWork);
 }
 
 // The registry against the names that have landed: a registration lost to the linker fails here.

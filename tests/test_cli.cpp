@@ -1,11 +1,16 @@
 // The command line end to end, as CONTRACT.md promises it: list, generate, run, and the error
 // behaviour (one "error:" line, exit 2 for usage and 3 for a bad polygon, nothing on stdout).
+#include "core/io.h"
 #include "core/json.h"
 #include "core/registry.h"
+#include "tests/fixtures.h"
 #include "tests/independent_check.h"
+#include "tests/reliability.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -165,6 +170,70 @@ TEST_F(Cli, RunJsonValidAgreesWithTheIndependentCheck) {
           << a.name << " on " << family;
     }
   }
+}
+
+TEST_F(Cli, MaxSecondsStopsASlowRunWithOneErrorLine) {
+  const fs::path poly = dir_ / "big.txt", svg = dir_ / "big.svg";
+  ASSERT_EQ(cli("generate --family random --n 3000 -o " + poly.string()).status, 0);
+  const auto start = std::chrono::steady_clock::now();
+  expect_error("run --algorithm diagonal-n4 --max-seconds 0.5 --json --svg " + svg.string() + " --input " + poly.string(),
+               4, "diagonal-n4 stopped after 0.5 s (--max-seconds)");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
+  EXPECT_FALSE(fs::exists(svg));
+}
+
+TEST_F(Cli, MaxSecondsKeepsAFinishedRunsOutput) {
+  const fs::path poly = file("l.txt", "0 0\n4 0\n4 2\n2 2\n2 4\n0 4\n"), svg = dir_ / "l.svg";
+  const Result plain = cli("run --algorithm hertel-mehlhorn --input " + poly.string());
+  const Result timed = cli("run --algorithm hertel-mehlhorn --max-seconds 60 --svg " + svg.string() + " --input " + poly.string());
+  ASSERT_EQ(timed.status, 0) << timed.err;
+  EXPECT_EQ(timed.err, "");
+  auto without_seconds = [](const std::string& out) { return out.substr(0, out.find(" seconds=")); };
+  EXPECT_EQ(without_seconds(timed.out), without_seconds(plain.out));
+  EXPECT_NE(timed.out.find("valid=yes"), std::string::npos) << timed.out;
+  EXPECT_NE(slurp(svg).find("</svg>"), std::string::npos);
+  const Result json = cli("run --algorithm ear-n2 --json --max-seconds 60 --input " + poly.string());
+  ASSERT_EQ(json.status, 0) << json.err;
+  EXPECT_EQ(parse_json(json.out).get("piece_count")->text, "4");
+  for (const std::string bad : {"0", "-1", "nan", "x"})
+    EXPECT_EQ(cli("run --algorithm ear-n2 --max-seconds " + bad + " --input " + poly.string()).status, 2) << bad;
+}
+
+// Every earcut fixture, whole (holes and all), through every registered algorithm within its budget:
+// a valid result, or one clean error line (exit 3 for holes and self-touching rings, refused before
+// any algorithm runs; exit 4 for a peer that fails), never a crash, a hang or an invalid result from
+// one of ours. The outer rings alone go through every algorithm in test_algorithms.cpp.
+TEST_F(Cli, EveryEarcutFixtureThroughEveryAlgorithm) {
+  std::size_t refused = 0, runs = 0;
+  for (const auto& path : fixtures::earcut_files()) {
+    std::optional<Polygon> p;
+    try {
+      p = Polygon::make(read_polygon_file(path.string()));
+    } catch (const PolygonError& e) {
+      // Refused before the algorithm runs, whichever it is: each refused fixture names the next one.
+      const Algorithm& a = algorithms()[refused++ % algorithms().size()];
+      expect_error("run --algorithm " + a.name + " --input " + path.string(), 3, e.what());
+      continue;
+    }
+    for (const Algorithm& a : algorithms()) {
+      if (!reliability::within_work(a, p->size(), p->reflex_count(), reliability::kTestWork)) continue;
+      ++runs;
+      const Result r = cli("run --algorithm " + a.name + " --json --max-seconds 300 --input " + path.string());
+      const std::string label = a.name + " on " + path.filename().string();
+      if (r.status == 0) {
+        EXPECT_EQ(r.err, "") << label;
+        EXPECT_TRUE(parse_json(r.out).get("valid")->boolean || reliability::is_peer(a)) << label;
+      } else {
+        EXPECT_TRUE(reliability::is_peer(a)) << label << ": " << r.err;
+        EXPECT_EQ(r.status, 4) << label;
+        EXPECT_EQ(r.out, "") << label;
+        EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << label;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << label << ": " << r.err;
+      }
+    }
+  }
+  EXPECT_EQ(refused, 57u);
+  EXPECT_GT(runs, 2u);
 }
 
 TEST_F(Cli, SvgIsWritten) {

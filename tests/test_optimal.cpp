@@ -8,6 +8,7 @@
 #include "core/validate.h"
 #include "generators/family.h"
 #include "tests/brute_force.h"
+#include "tests/reliability.h"
 
 #include <CGAL/CORE_Expr.h>
 #include <gtest/gtest.h>
@@ -20,7 +21,7 @@
 namespace pd {
 namespace {
 
-bool is_peer(const Algorithm& a) { return a.name.rfind("cgal-", 0) == 0; }
+using reliability::is_peer;
 
 std::vector<const Algorithm*> registered_optimal_programs() {
   std::vector<const Algorithm*> out;

@@ -1,0 +1,88 @@
+// The checks that the fuzz targets (fuzz/) and the reliability tests share: what counts as a finding on
+// an arbitrary input, so that every input a fuzzer saved (data/fuzz-regressions) is replayed by the test
+// suite with exactly the check that found it.
+//
+// Readers: any text either parses, or is refused with a PolygonError; an accepted ring either makes a
+// Polygon or is refused with a PolygonError; an accepted Polygon written in every format reads back as
+// the same polygon. Algorithms: on an accepted polygon, every registered algorithm within the work
+// budget returns, and ours return a valid decomposition; a peer's exception or invalid result is its own
+// known behaviour, recorded and not a finding.
+#pragma once
+
+#include "core/io.h"
+#include "core/registry.h"
+#include "core/validate.h"
+#include "harness/bound_expr.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pd::reliability {
+
+inline bool is_peer(const Algorithm& a) { return a.name.rfind("cgal-", 0) == 0; }
+
+// Whether a polygon of n vertices and r notches is within `work` for `a`: under its size ceiling, and
+// its claimed bound in n and r at most `work` (the ceiling alone ignores r: an n*r^2 program on a
+// real-world ring with r = n/2 is cubic).
+inline bool within_work(const Algorithm& a, std::size_t n, std::size_t r, double work) {
+  const auto bound = BoundExpr::parse(a.time_bound);
+  return n <= a.size_ceiling && (!bound || (*bound)(static_cast<double>(n), static_cast<double>(r)) <= work);
+}
+
+// The polygon in `text`, or nothing when it is refused with a PolygonError. Any other exception
+// escapes: a reader that fails otherwise is a finding. Throws std::logic_error when an accepted polygon
+// does not read back from one of the writers' formats.
+inline std::optional<Polygon> read_checked(const std::string& text) {
+  std::optional<Polygon> p;
+  try {
+    p = Polygon::make(parse_polygon(text));
+  } catch (const PolygonError&) {
+    return std::nullopt;
+  }
+  for (const Format f : {Format::Txt, Format::Wkt, Format::GeoJson})
+    if (Polygon::make(parse_polygon(format_polygon(p->vertices(), f))).vertices() != p->vertices())
+      throw std::logic_error("the polygon does not read back from format " + std::to_string(static_cast<int>(f)));
+  return p;
+}
+
+struct Verdict {
+  const Algorithm* algorithm;
+  bool ok;
+  std::string reason;  // the validator's, or the exception's
+};
+
+// Every registered algorithm within `work` on p, validated.
+inline std::vector<Verdict> run_every_algorithm(const Polygon& p, double work) {
+  std::vector<Verdict> verdicts;
+  for (const Algorithm& a : algorithms()) {
+    if (!within_work(a, p.size(), p.reflex_count(), work)) continue;
+    Counters counters;
+    try {
+      const Validation v = validate(p, a.run(p, counters), a.kind, a.steiner);
+      verdicts.push_back({&a, v.ok, v.reason});
+    } catch (const std::exception& e) {
+      verdicts.push_back({&a, false, std::string("threw: ") + e.what()});
+    }
+  }
+  return verdicts;
+}
+
+// The first verdict against one of our algorithms, as "algorithm: reason".
+inline std::optional<std::string> first_finding(const std::vector<Verdict>& verdicts) {
+  for (const Verdict& v : verdicts)
+    if (!v.ok && !is_peer(*v.algorithm)) return v.algorithm->name + ": " + v.reason;
+  return std::nullopt;
+}
+
+// The test suite's work budget: an algorithm is tested on a polygon when its claimed bound there is at
+// most this.
+constexpr double kTestWork = 2e8;
+
+// The fuzz targets' input ceilings: run_every_algorithm is given polygons of at most kFuzzMaxVertices
+// vertices, and each algorithm whose claimed bound there is at most kFuzzWork, so that one input
+// takes milliseconds.
+constexpr std::size_t kFuzzMaxVertices = 32;
+constexpr double kFuzzWork = 2e6;
+
+}  // namespace pd::reliability
