@@ -7,6 +7,7 @@
 // Exit status: 0 the sweep (or shard) is complete; 2 bad usage; kTimeoutExit (75) a key hit the
 // timeout, was journaled as skipped, and the sweep should be run again to go on.
 #include "harness/bench_runner.h"
+#include "harness/large_stack.h"
 #include "harness/provenance.h"
 
 #include <benchmark/benchmark.h>
@@ -172,10 +173,12 @@ int run(int argc, char** argv) {
 }  // namespace pd
 
 int main(int argc, char** argv) {
-  try {
-    return pd::run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
-  }
+  return pd::run_on_large_stack([&] {
+    try {
+      return pd::run(argc, argv);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return 2;
+    }
+  });
 }

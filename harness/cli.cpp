@@ -9,6 +9,7 @@
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"
+#include "harness/large_stack.h"
 
 #include <boost/program_options.hpp>
 
@@ -409,13 +410,15 @@ int dispatch(const std::vector<std::string>& argv) {
 }  // namespace pd
 
 int main(int argc, char** argv) {
-  try {
-    return pd::dispatch(std::vector<std::string>(argv + 1, argv + argc));
-  } catch (const pd::Exit& e) {
-    std::cerr << "error: " << e.message << "\n";
-    return e.status;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 1;
-  }
+  return pd::run_on_large_stack([&] {
+    try {
+      return pd::dispatch(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const pd::Exit& e) {
+      std::cerr << "error: " << e.message << "\n";
+      return e.status;
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return 1;
+    }
+  });
 }

@@ -242,5 +242,15 @@ TEST_F(Cli, SvgIsWritten) {
   EXPECT_NE(slurp(svg).find("</svg>"), std::string::npos);
 }
 
+// CGAL's y-monotone partition recurses about once per vertex on a spiral and overflowed the default
+// 8 MiB stack at n = 300,000 (a segmentation fault); the command line runs on a 1 GiB stack.
+TEST_F(Cli, DeepRecursionInAPeerIsNotACrash) {
+  const fs::path poly = dir_ / "spiral.txt";
+  ASSERT_EQ(cli("generate --family spiral --n 300000 -o " + poly.string()).status, 0);
+  const Result r = cli("run --algorithm cgal-y-monotone --no-validate --input " + poly.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("cgal-y-monotone: n=300000"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace pd

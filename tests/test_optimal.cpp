@@ -268,7 +268,9 @@ TEST(Reduction, ShrinksThePolygonAndKeepsTheOptimum) {
           EXPECT_LE(forced_counters["reduced_n"], static_cast<std::int64_t>(3 * (r * r + 2 * r))) << label;
           EXPECT_LT(forced_counters["reduced_n"], static_cast<std::int64_t>(n)) << label;
           EXPECT_GT(forced_counters["rays_shot"], 0) << label;
-          if (n == 4000) EXPECT_EQ(registered_counters["reduced_n"], forced_counters["reduced_n"]) << label;
+          if (n == 4000) {
+            EXPECT_EQ(registered_counters["reduced_n"], forced_counters["reduced_n"]) << label;
+          }
           const std::size_t optimum = whole.run(p, whole_counters).cuts.size();
           EXPECT_EQ(forced.cuts.size(), optimum) << label;
           EXPECT_EQ(chosen.cuts.size(), optimum) << label;
@@ -369,7 +371,9 @@ Counters expect_least_ink(const Polygon& p, const std::string& label) {
     if (!least || compare_ink(other, *least) < 0) least = std::move(other);
   });
   EXPECT_TRUE(least.has_value()) << label;
-  if (least) EXPECT_EQ(compare_ink(ours, *least), 0) << label;
+  if (least) {
+    EXPECT_EQ(compare_ink(ours, *least), 0) << label;
+  }
   return counters;
 }
 
