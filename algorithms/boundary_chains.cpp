@@ -100,6 +100,14 @@ Chain whole_boundary(const Polygon& p) {
   return {0, p.size(), lead};
 }
 
+// The sign of an interval when it is settled, else kUnsettled.
+int settled_sign(const CGAL::Interval_nt<false>& v) {
+  if (v.inf() > 0) return 1;
+  if (v.sup() < 0) return -1;
+  if (v.inf() == 0 && v.sup() == 0) return 0;
+  return kUnsettled;
+}
+
 // Chains shorter than this are tested edge by edge: cheaper than setting up the searches, still O(1).
 constexpr std::size_t kShortChain = 8;
 
@@ -118,6 +126,10 @@ SegmentSearch::SegmentSearch(const Polygon& p, const std::vector<QPoint>& exact)
 // The chain's edges, other than those at `skip`, searched in at most three ranges.
 bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId skip) {
   s_ = &s, t_ = &t;
+  st_ = Segment(s, t);
+  u_ = t - s;
+  sx_ = Interval(CGAL::to_interval(s.x())), sy_ = Interval(CGAL::to_interval(s.y()));
+  ux_ = Interval(CGAL::to_interval(u_.x())), uy_ = Interval(CGAL::to_interval(u_.y()));
   const std::size_t n = p_.size();
   for (const Chain& c : chains_) {
     chain_ = &c;
@@ -141,9 +153,13 @@ bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId sk
 // the segment's and the opposite one, into at most three runs along which the signed distance to the
 // segment's line is monotone.
 bool SegmentSearch::range_meets(std::size_t lo, std::size_t hi) {
-  if (hi - lo <= kShortChain) {
-    for (std::size_t j = lo; j < hi; ++j, ++steps_)
-      if (meets(j, j + 1)) return true;
+  if (hi - lo <= kShortChain) {  // edge by edge: only an edge that reaches the line can meet the segment
+    int side_j = side(lo);
+    for (std::size_t j = lo; j < hi; ++j) {
+      const int side_next = side(j + 1);
+      if (side_j * side_next <= 0 && meets(j, j + 1)) return true;
+      side_j = side_next;
+    }
     return false;
   }
   std::size_t cuts[4] = {lo, first_edge_reaching(lo, hi, 1), first_edge_reaching(lo, hi, -1), hi};
@@ -156,14 +172,14 @@ bool SegmentSearch::range_meets(std::size_t lo, std::size_t hi) {
 // The first edge in [lo, hi) whose direction is at or past `sense` * (t - s) in the order around d0;
 // hi when there is none. The directions are sorted in that order, so this is a binary search.
 std::size_t SegmentSearch::first_edge_reaching(std::size_t lo, std::size_t hi, int sense) {
-  const Vec d0 = x(1) - x(0), u = *t_ - *s_;
-  const int c = sense * exact_cross_sign(d0, u);
-  const int half_u = c > 0 ? 0 : c < 0 ? 1 : sense * exact_dot_sign(d0, u) > 0 ? 0 : 1;
+  const Vec d0 = x(1) - x(0);
+  const int c = sense * exact_cross_sign(d0, u_);
+  const int half_u = c > 0 ? 0 : c < 0 ? 1 : sense * exact_dot_sign(d0, u_) > 0 ? 0 : 1;
   auto before_u = [&](std::size_t j) {
     ++steps_;
     const int h = half_of_edge(p_, *chain_, j);
     if (h != half_u) return h < half_u;
-    return sense * exact_cross_sign(x(j + 1) - x(j), u) > 0;
+    return sense * edge_turn(j) > 0;
   };
   while (lo < hi) {
     const std::size_t mid = lo + (hi - lo) / 2;
@@ -176,14 +192,13 @@ std::size_t SegmentSearch::first_edge_reaching(std::size_t lo, std::size_t hi, i
 // Vertices lo..hi, along which the signed distance to the segment's line is monotone: only the edges
 // where it reaches the line, the stretch on the line and the edge where it leaves can meet the segment.
 bool SegmentSearch::run_meets(std::size_t lo, std::size_t hi) {
-  const int rising = exact_cross_sign(*t_ - *s_, x(hi) - x(lo));
+  const int rising = exact_cross_sign(u_, x(hi) - x(lo));
   const int dir = rising == 0 ? 1 : rising;
   auto first = [&](std::size_t from, int at_least) {
     std::size_t a = from, b = hi + 1;
     while (a < b) {
       const std::size_t mid = a + (b - a) / 2;
-      ++steps_;
-      if (dir * orient(*s_, *t_, x(mid)) >= at_least) b = mid;
+      if (dir * side(mid) >= at_least) b = mid;
       else a = mid + 1;
     }
     return a;
@@ -194,10 +209,32 @@ bool SegmentSearch::run_meets(std::size_t lo, std::size_t hi) {
   return lo < above && above <= hi && meets(above - 1, above);
 }
 
+// The side of the segment's line the chain's vertex j is on: the sign of cross(u, x_j - s).
+int SegmentSearch::side(std::size_t j) {
+  ++steps_;
+  const Point& v = input(j);
+  int sign;
+  {
+    CGAL::Protect_FPU_rounding<true> upwards;
+    sign = settled_sign(ux_ * (Interval(v.y()) - sy_) - uy_ * (Interval(v.x()) - sx_));
+  }
+  return sign != kUnsettled ? sign : orient(*s_, *t_, x(j));
+}
+
+// The sign of cross(e_j, u) for the chain's edge e_j from vertex j to j + 1.
+int SegmentSearch::edge_turn(std::size_t j) {
+  const Point &a = input(j), &b = input(j + 1);
+  int sign;
+  {
+    CGAL::Protect_FPU_rounding<true> upwards;
+    sign = settled_sign((Interval(b.x()) - Interval(a.x())) * uy_ - (Interval(b.y()) - Interval(a.y())) * ux_);
+  }
+  return sign != kUnsettled ? sign : exact_cross_sign(x(j + 1) - x(j), u_);
+}
+
 bool SegmentSearch::meets(std::size_t from, std::size_t to) {
-  const Segment st(*s_, *t_);
-  if (from == to) return st.has_on(x(from));
-  return CGAL::do_intersect(st, Segment(x(from), x(to)));
+  if (from == to) return st_.has_on(x(from));
+  return CGAL::do_intersect(st_, Segment(x(from), x(to)));
 }
 
 }  // namespace pd::boundary

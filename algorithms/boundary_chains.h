@@ -13,6 +13,8 @@
 
 #include "core/registry.h"
 
+#include <CGAL/Interval_nt.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -104,7 +106,10 @@ inline int half_of_edge(const Polygon& p, const Chain& c, std::size_t j) {
 void split_into_chains(const Polygon& p, std::vector<VertexId>& notches, std::vector<Chain>& chains);
 
 // Segments with exact rational ends against the chains: O(log k) per chain of k edges, O(r log(n/r))
-// for all of them.
+// for all of them. Each chain is cut where its direction passes the segment's and the opposite one, into
+// at most three runs along which the signed distance to the segment's line is monotone; a binary search
+// in each finds the only edges that can reach the line, which are then tested exactly. The signs are
+// settled in interval arithmetic where it can, else in rationals: every answer is exact.
 class SegmentSearch {
  public:
   // `exact` holds p's vertices as rationals.
@@ -118,7 +123,12 @@ class SegmentSearch {
   std::int64_t steps() const { return steps_; }
 
  private:
+  using Interval = CGAL::Interval_nt<false>;
+
   const QPoint& x(std::size_t j) const { return exact_[chain_vertex(p_, *chain_, j)]; }
+  const Point& input(std::size_t j) const { return p_[chain_vertex(p_, *chain_, j)]; }
+  int side(std::size_t j);
+  int edge_turn(std::size_t j);
   std::size_t first_edge_reaching(std::size_t lo, std::size_t hi, int sense);
   bool range_meets(std::size_t lo, std::size_t hi);
   bool run_meets(std::size_t lo, std::size_t hi);
@@ -128,7 +138,12 @@ class SegmentSearch {
   const std::vector<QPoint>& exact_;
   std::vector<Chain> chains_;
   const Chain* chain_ = nullptr;
+  // The segment of the current search, its direction u = t - s, and intervals around s and u that
+  // settle most signs in floating point.
   const QPoint *s_ = nullptr, *t_ = nullptr;
+  ExactKernel::Segment_2 st_;
+  ExactKernel::Vector_2 u_;
+  Interval sx_, sy_, ux_, uy_;
   std::int64_t steps_ = 0;
 };
 
