@@ -41,11 +41,13 @@
 //   that needs the edge turned further than that point is missed: a compromise of exactness against
 //   the thesis's extreme (a symbolic perturbation would remove it); no test has met such a case.
 // - STEP 3's X4 term is left to the variant (x4_term).
-// Deviations: superranges are replaced by visibility (see chazelle_dobkin_patterns.h); condition 3 of
-// Theorem 14 is tested against every edge of P, O(n), for the candidates that pass the O(1) tests.
+// Deviation: superranges are replaced by visibility (see chazelle_dobkin_patterns.h), which makes the
+// preprocessing O(n log n + n r) in place of O(n + r^2 log n).
 //
 // Time, apart from x4_term: O(n log n + n r + r^2 log n) preprocessing, then O(r^3) pattern tests
-// (STEPs 2 and 4: O(r) per interval), each O(1) or, past the constant-time tests, O(n). Space O(r^2)
+// (STEPs 2 and 4: O(r) per interval), each O(1) or, past the constant-time tests, O(r log(n/r)) (a
+// segment against the boundary's convex chains): O(n log n + n r + r^4 log(n/r)), plus STEP 5's naive
+// completion, O(n r). Space O(r^2)
 // subproblems plus O(n). Output: exactly r + 1 - S(0, r-1) convex pieces; Steiner points exact.
 #pragma once
 

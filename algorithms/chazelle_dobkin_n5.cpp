@@ -7,13 +7,15 @@
 // (Figure 2.24-a, -b: the first Steiner point joins z_i and z_k, or z_k and z_l), with the Steiner
 // points at the tips of Q (Theorem 15): O(r^2) tests per interval, O(r^4) in all, the r^5 of Theorem 17
 // with Theorem 15's O(r log(n/r)) test. A candidate is tried only when its count would beat the best so
-// far, so the tests actually made are often far fewer.
-// Deviation: the segment AB of Theorem 15 is tested against every edge of P (O(n)) for the candidates
-// that pass the O(1) angle tests, in place of the convex chains (O(r log(n/r))).
+// far, so the tests actually made are often far fewer. Past its O(1) angle tests, a candidate's
+// segments are tested against the boundary's convex chains, O(r log(n/r)) (Theorem 15).
+// Deviation: superranges are replaced by visibility from each notch (chazelle_dobkin_patterns.h), so
+// the preprocessing is O(n log n + n r) where the thesis has O(n + r^2 log n).
 //
 // Time: O(n log n + n r + r^2 log n) preprocessing, O(r^4) pattern tests, each O(1) or, past the
-// constant-time tests, O(n). Space O(r^2 + n). Pre: a simple counter-clockwise polygon. Output: an
-// optimal convex decomposition (OPT = r + 1 - the most compatible patterns), Steiner points exact.
+// constant-time tests, O(r log(n/r)): O(n log n + n r + r^5 log(n/r)). Space O(r^2 + n). Pre: a
+// simple counter-clockwise polygon. Output: an optimal convex decomposition (OPT = r + 1 - the most
+// compatible patterns), Steiner points exact.
 #include "algorithms/chazelle_dobkin.h"
 
 namespace pd {
@@ -41,7 +43,7 @@ Decomposition chazelle_dobkin_n5(const Polygon& p, Counters& counters) { return 
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin-n5", Kind::Convex, true, true, "n*r+r^5*log(n/r)", "== OPT",
+REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin-n5", Kind::Convex, true, true, "n*log(n)+n*r+r^5*log(n/r)", "== OPT",
                              "Chazelle thesis (000) Sec. 2.3, Thms 13-17", 20000, chazelle_dobkin_n5});
 
 }  // namespace pd

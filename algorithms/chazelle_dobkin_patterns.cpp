@@ -86,11 +86,16 @@ bool splits_reflex_side(const QPoint& a, const QPoint& b, const QPoint& tip, con
   return s * cross(u, d) >= 0 && s * cross(d, w) >= 0;
 }
 
+std::vector<QPoint> exact_vertices(const Polygon& p) {
+  std::vector<QPoint> exact;
+  exact.reserve(p.size());
+  for (const Point& v : p.vertices()) exact.push_back(to_exact(v));
+  return exact;
+}
+
 }  // namespace
 
-Patterns::Patterns(const Polygon& p) : p_(p) {
-  exact_.reserve(p.size());
-  for (const Point& v : p.vertices()) exact_.push_back(to_exact(v));
+Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segments_(p, exact_) {
   for (std::size_t v = 0; v < p.size(); ++v)
     if (p.is_reflex(v)) notches_.push_back(static_cast<VertexId>(v));
   const std::size_t r = notches_.size();
@@ -293,22 +298,10 @@ bool Patterns::sees(VertexId v, const QPoint& s) const {
   if (d == Vec(0, 0)) return false;
   const bool reflex = cross(f, b) < 0;
   const bool inside = reflex ? !(cross(b, d) >= 0 && cross(d, f) >= 0) : cross(f, d) > 0 && cross(d, b) > 0;
-  if (!inside) return false;
-  const Segment seg(o, s);
-  for (std::size_t e = 0; e < p_.size(); ++e) {
-    const std::size_t e1 = p_.next(e);
-    if (e == v || e1 == v) continue;
-    if (CGAL::do_intersect(seg, Segment(at(static_cast<VertexId>(e)), at(static_cast<VertexId>(e1))))) return false;
-  }
-  return true;
+  return inside && !segments_.meets_boundary(o, s, v);
 }
 
-bool Patterns::inside(const QPoint& s, const QPoint& t) const {
-  const Segment seg(s, t);
-  for (std::size_t e = 0; e < p_.size(); ++e)
-    if (CGAL::do_intersect(seg, Segment(at(static_cast<VertexId>(e)), at(static_cast<VertexId>(p_.next(e)))))) return false;
-  return true;
-}
+bool Patterns::inside(const QPoint& s, const QPoint& t) const { return !segments_.meets_boundary(s, t); }
 
 void Patterns::report(Counters& counters) const {
   counters["x2_tests"] += x2_tests_;
@@ -319,6 +312,7 @@ void Patterns::report(Counters& counters) const {
   counters["x4_tests"] += x4_tests_;
   counters["x4_found"] += x4_found_;
   counters["tips"] += tips_;
+  counters["segment_search_steps"] += segments_.steps();
 }
 
 }  // namespace pd::cd

@@ -32,8 +32,10 @@
 //     half-planes. S is taken as the average of the vertices of this convex region (exact rationals),
 //     which lies in its interior whenever the region has positive area.
 //   - Condition 3 (C, A and B lie on the segments R(.,.), i.e. Q lies in P) is checked on the chosen
-//     S directly: its three edges are tested against every edge of P (O(n)), and only for triples
-//     that pass the O(1) half-plane test. By the sufficiency half of Theorem 14, when Q lies in P
+//     S directly, and only for triples that pass the O(1) half-plane test: its three edges are tested
+//     against P's boundary cut into convex chains between the notches (Sec. 2.2.2, Figure 2.6;
+//     algorithms/boundary_chains.h), O(log k) per chain of k edges, O(r log(n/r)) in all, as in the
+//     proof of Theorem 15. By the sufficiency half of Theorem 14, when Q lies in P
 //     every kernel point is a Steiner point; by the necessity half, no Steiner point exists otherwise.
 //   - Steiner points whose region has no interior (patterns that exist only in degenerate position,
 //     an edge through a vertex of P or exactly along a window) are not reported.
@@ -44,17 +46,20 @@
 //     v_j l_ji": each Steiner point is put at the tip of Q facing the chain between its two notches,
 //     where each notch's edge is turned as far towards that chain as its range, its view across the
 //     other notch and the line between the two allow. The pattern exists when both tips exist with
-//     their edges in P, the segment AB lies in P, and AB leaves no reflex angle at A or at B (it lies
+//     their edges in P, the segment AB lies in P (the convex chains again), and AB leaves no reflex angle at A or at B (it lies
 //     in the cone between the extensions of A's two notch edges beyond A, and likewise at B); edges
 //     that would pass through a vertex of P are refused, as the thesis assumes no reduction meets a
 //     notch (the pattern then reduces to a Y-pattern, found as such).
 // Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains) are replaced by the
 // visibility of every vertex from each notch (algorithms/visibility.h, O(n) per notch after an
 // O(n log n) triangulation): the transitions are read from it by binary search, O(r^2 log n) in all.
+// So the preprocessing is O(n log n + n r) where the thesis has O(n + r^2 log n); every test after it
+// costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the boundary).
 //
 // Exact: every test is an orientation on exact rationals; Steiner points are exact rationals.
 #pragma once
 
+#include "algorithms/boundary_chains.h"
 #include "core/registry.h"
 
 #include <array>
@@ -84,8 +89,12 @@ struct Joint {
 
 class Patterns {
  public:
-  // Notches and visibility from each: O(n log n + n r + r^2 log n).
+  // Notches, the boundary's convex chains (O(n)) and visibility from each notch: O(n log n + n r +
+  // r^2 log n).
   explicit Patterns(const Polygon& p);
+  // The chain search refers to this object's rational vertices.
+  Patterns(const Patterns&) = delete;
+  Patterns& operator=(const Patterns&) = delete;
 
   // The notches, in counter-clockwise (index) order.
   const std::vector<VertexId>& notches() const { return notches_; }
@@ -113,7 +122,7 @@ class Patterns {
 
   // Theorem 14 on joints a, b, c at distinct notches in counter-clockwise boundary order: a Steiner
   // point S such that Sa, Sb, Sc lie in P, leave S without a reflex angle and each lies in its joint's
-  // cone; or nothing. O(1) when the half-planes reject, O(n) otherwise. `x3` returns the average of the
+  // cone; or nothing. O(1) when the half-planes reject, O(r log(n/r)) otherwise. `x3` returns the average of the
   // region's vertices; `x3_extreme` the point of the region turned furthest around a (counter-clockwise
   // when `counter_clockwise`), moved 1/64 of the way towards that average so that it is interior
   // (Corollary 14.2; see the header comment).
@@ -123,16 +132,19 @@ class Patterns {
   // Theorem 15, with the Steiner points at the tips of Q: the loosest X4-pattern whose first Steiner
   // point joins notches a and b and whose second joins c and d, the four distinct and in
   // counter-clockwise boundary order starting anywhere (so a..b and c..d are the chains the two
-  // Steiner points face). Returns the two Steiner points or nothing. O(1) after the tips, then O(n).
+  // Steiner points face). Returns the two Steiner points or nothing. O(1) after the tips, then
+  // O(r log(n/r)); a tip costs O(r log(n/r)) once.
   std::optional<std::pair<QPoint, QPoint>> x4(std::size_t a, std::size_t b, std::size_t c, std::size_t d);
 
-  // Whether the open segment from polygon vertex v to point s lies in P's interior, s included. O(n).
+  // Whether the open segment from polygon vertex v to point s lies in P's interior, s included.
+  // O(r log(n/r)).
   bool sees(VertexId v, const QPoint& s) const;
-  // Whether the closed segment st, between interior points, avoids P's boundary. O(n).
+  // Whether the closed segment st, between interior points, avoids P's boundary. O(r log(n/r)).
   bool inside(const QPoint& s, const QPoint& t) const;
 
   // Counts "x2_tests", "x2_found", "x3_tests", "x3_candidates" (past the half-planes), "x3_found",
-  // "x4_tests", "x4_found", "tips".
+  // "x4_tests", "x4_found", "tips", "segment_search_steps" (binary-search steps and edges tested by sees
+  // and inside).
   void report(Counters& counters) const;
 
  private:
@@ -147,6 +159,7 @@ class Patterns {
 
   const Polygon& p_;
   std::vector<QPoint> exact_;
+  mutable boundary::SegmentSearch segments_;  // P's boundary in convex chains, for sees and inside
   std::vector<VertexId> notches_;
   // r x r: whether notch j's vertex is a diagonal's end seen from notch i; the vertex through which
   // notch i's view passes across notch j's boundary position (see the header comment).

@@ -20,154 +20,20 @@
 // exact predicates on the input points.
 //
 // The chains are the thesis's (greedy, maximal); building them skips the tests of the closing angles
-// where they provably pass (see ChainBuilder), so that the O(n) pass costs about one predicate per
+// where they provably pass (see boundary_chains.cpp), so that the O(n) pass costs about one predicate per
 // vertex: it is what this algorithm spends most of its time on when r is small.
+#include "algorithms/boundary_chains.h"
 #include "algorithms/naive.h"
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
 
 namespace pd {
 namespace {
 
-// Exact signs of cross(q - p, s - r) and (q - p) . (s - r) on input points. The pass over all n
-// vertices evaluates the first at every vertex, so they get the semi-static filter CGAL gives its
-// orientation predicate (CGAL's four-point predicates have only its slower interval filter): each is
-// the sum of two products of differences of input doubles, each difference rounded once, so CGAL's
-// error bound for the orientation determinant holds with the same constant, and with the dot
-// product's own magnitudes. Outside the filter's range, or when it cannot decide, the sign is
-// computed in rationals.
-[[gnu::noinline]] int exact_sign_of(const Point& p, const Point& q, const Point& r, const Point& s, bool cross) {
-  const QPoint P = to_exact(p), Q = to_exact(q), R = to_exact(r), S = to_exact(s);
-  const Rational ax = Q.x() - P.x(), ay = Q.y() - P.y(), bx = S.x() - R.x(), by = S.y() - R.y();
-  const Rational value = cross ? Rational(ax * by - ay * bx) : Rational(ax * bx + ay * by);
-  return CGAL::sign(value);
-}
-
-constexpr double kFilterBound = 8.8872057372592798e-16;
-
-// The difference q - p of two input points, rounded (a rounded difference has the exact one's sign).
-struct Edge {
-  Edge(const Point& p, const Point& q) : x(q.x() - p.x()), y(q.y() - p.y()) {}
-  // Which quarter turn [0, 90), [90, 180), [180, 270), [270, 360) the direction is in. Exact.
-  int quadrant() const {
-    const bool upper = (y > 0) | ((y == 0) & (x > 0));  // [0, 180); written to compile without branches
-    return upper ? int(x <= 0) : 2 + int(x >= 0);
-  }
-  double x, y;
-};
-
-// Sign of cross(u, w) for rounded differences u and w when the filter settles it, else kUnsettled.
-constexpr int kUnsettled = 2;
-inline int filtered_cross_sign(const Edge& u, const Edge& w) {
-  const double max_x = std::max(std::abs(u.x), std::abs(w.x)), max_y = std::max(std::abs(u.y), std::abs(w.y));
-  const double low = std::min(max_x, max_y), high = std::max(max_x, max_y);
-  if (low >= 1e-146 && high < 1e153) {
-    const double det = u.x * w.y - u.y * w.x, eps = kFilterBound * low * high;
-    if (det > eps) return 1;
-    if (det < -eps) return -1;
-  }
-  // A rounded difference is zero exactly when the difference is: when both products vanish that way
-  // (as for two axis-parallel edges, common in real polygons) the sign is 0, which no bound settles.
-  if ((u.x == 0 || w.y == 0) && (u.y == 0 || w.x == 0)) return 0;
-  return kUnsettled;
-}
-
-inline int cross_sign(const Point& p, const Point& q, const Point& r, const Point& s) {
-  const int sign = filtered_cross_sign(Edge(p, q), Edge(r, s));
-  return sign != kUnsettled ? sign : exact_sign_of(p, q, r, s, true);
-}
-
-inline int dot_sign(const Point& p, const Point& q, const Point& r, const Point& s) {
-  const Edge u(p, q), w(r, s);
-  const double high = std::max(std::max(std::abs(u.x), std::abs(u.y)), std::max(std::abs(w.x), std::abs(w.y)));
-  if (high >= 1e-146 && high < 1e153) {
-    const double dot = u.x * w.x + u.y * w.y, eps = kFilterBound * high * high;
-    if (dot > eps) return 1;
-    if (dot < -eps) return -1;
-  }
-  if ((u.x == 0 || w.x == 0) && (u.y == 0 || w.y == 0)) return 0;
-  return exact_sign_of(p, q, r, s, false);
-}
-
-// A convex chain: `edges` edges from polygon vertex `start` on, counter-clockwise, such that every
-// prefix closes into a convex polygon; `lead` of its first edges point the same way as the first.
-struct Chain {
-  std::size_t start, edges, lead;
-};
-
-// Figure 2.6 in one pass round the boundary from its first notch: the boundary between two notches is
-// cut greedily into maximal convex chains. A chain from y_s is extended by the next edge while the
-// polygon y_s .. y_k stays convex; between notches the boundary turns left everywhere, so only its
-// angles at y_s and y_k can be reflex. Until the boundary has turned through more than 180 degrees
-// from the chain's first edge, every vertex is left of every edge's line and those angles need no
-// test. How far it has turned is known to a quarter turn from the quadrants the edges' directions
-// pass through (comparisons only); an exact test is needed only when it has crossed two quadrant
-// boundaries. So most vertices cost one predicate, the notch test.
-class ChainBuilder {
- public:
-  explicit ChainBuilder(const Polygon& p) : p_(p) {}
-
-  // The notches in index order, and the chains from the first notch on.
-  void build(std::vector<VertexId>& notches, std::vector<Chain>& chains) {
-    const std::size_t n = p_.size();
-    std::size_t first = 0;
-    while (first < n && cross_sign(p_[p_.prev(first)], p_[first], p_[first], p_[p_.next(first)]) >= 0) ++first;
-    if (first == n) return;
-    notches.push_back(static_cast<VertexId>(first));
-    std::size_t d = first, e = p_.next(first);  // d precedes e
-    Edge before(p_[d], p_[e]);
-    int before_quadrant = before.quadrant();
-    start_chain(first);
-    while (e != first) {
-      const std::size_t e1 = p_.next(e);
-      const Edge after(p_[e], p_[e1]);
-      const int after_quadrant = after.quadrant();
-      int t = filtered_cross_sign(before, after);
-      if (t == kUnsettled) t = exact_sign_of(p_[d], p_[e], p_[e], p_[e1], true);
-      if (t < 0) notches.push_back(static_cast<VertexId>(e));
-      if (t < 0 || !extends(e, e1, t, (after_quadrant - before_quadrant) & 3)) {
-        chains.push_back({s_, distance(s_, e), lead_});
-        start_chain(e);
-      }
-      before = after, before_quadrant = after_quadrant;
-      d = e, e = e1;
-    }
-    chains.push_back({s_, distance(s_, e), lead_});
-  }
-
- private:
-  std::size_t distance(std::size_t from, std::size_t to) const {
-    return to > from ? to - from : to + p_.size() - from;
-  }
-
-  void start_chain(std::size_t s) {
-    s_ = s, s1_ = p_.next(s), lead_ = 1, quadrants_ = 0, straight_ = true, within_half_turn_ = true;
-  }
-
-  // Whether the chain y_s .. y_e, with turn t >= 0 at y_e, extends by edge (y_e, y_e1), whose direction
-  // is `steps` quadrant boundaries on from the previous edge's (a left turn of less than 180 degrees
-  // crosses at most two).
-  bool extends(std::size_t e, std::size_t e1, int t, int steps) {
-    if (straight_ && t == 0) return ++lead_, true;
-    straight_ = false;
-    if (within_half_turn_) {
-      // After q boundaries the turn from the first edge is strictly between 90 (q - 1) and 90 (q + 1)
-      // degrees. A parallel edge at q = 2 points the opposite way: the boundary turns by less than 180
-      // degrees at a vertex, so it cannot come round to the first edge's way without passing 180.
-      quadrants_ += steps;
-      if (quadrants_ <= 1) return true;
-      if (quadrants_ == 2 && cross_sign(p_[s_], p_[s1_], p_[e], p_[e1]) >= 0) return true;
-      within_half_turn_ = false;
-    }
-    return orient(p_[e], p_[e1], p_[s_]) >= 0 && orient(p_[e1], p_[s_], p_[s1_]) >= 0;
-  }
-
-  const Polygon& p_;
-  std::size_t s_ = 0, s1_ = 0, lead_ = 1, quadrants_ = 0;
-  bool straight_ = true, within_half_turn_ = true;
-};
+using boundary::Chain;
+using boundary::cross_sign;
+using boundary::dot_sign;
 
 // The O(log k) intersection of a shot's perturbed ray with every convex chain.
 class ChainSearch : public naive::BoundarySearch {
@@ -191,10 +57,7 @@ class ChainSearch : public naive::BoundarySearch {
   std::int64_t searches() const { return searches_; }
 
  private:
-  std::size_t id(std::size_t j) const {
-    const std::size_t k = chain_->start + j;
-    return k < p_.size() ? k : k - p_.size();
-  }
+  std::size_t id(std::size_t j) const { return boundary::chain_vertex(p_, *chain_, j); }
   const Point& x(std::size_t j) const { return p_[id(j)]; }
 
   void search_chain(std::size_t lo, std::size_t hi) {
@@ -221,15 +84,6 @@ class ChainSearch : public naive::BoundarySearch {
     }
   }
 
-  // Angular position, measured counter-clockwise from the chain's first edge d0: 0 for [0, 180), 1
-  // for [180, 360), and 2 for an edge that has turned a full circle back to d0's direction.
-  int half_of_edge(std::size_t j) const {
-    const int c = cross_sign(x(0), x(1), x(j), x(j + 1));
-    if (c != 0) return c > 0 ? 0 : 1;
-    if (dot_sign(x(0), x(1), x(j), x(j + 1)) <= 0) return 1;
-    return j < chain_->lead ? 0 : 2;
-  }
-
   // The first edge in [lo, hi) whose direction is at or past the direction `sense` * (v - a) in the
   // order around d0; hi when there is none. The directions are sorted in that order (the chain turns
   // left by less than a full turn), so this is a binary search.
@@ -239,7 +93,7 @@ class ChainSearch : public naive::BoundarySearch {
     const int half_u = c > 0 ? 0 : c < 0 ? 1 : ahead_of_d0 ? 0 : 1;
     auto before_u = [&](std::size_t j) {
       ++steps_;
-      const int h = half_of_edge(j);
+      const int h = boundary::half_of_edge(p_, *chain_, j);
       if (h != half_u) return h < half_u;
       return sense * cross_sign(x(j), x(j + 1), *a_, *v_) > 0;
     };
@@ -297,7 +151,7 @@ class ChainSearch : public naive::BoundarySearch {
 Decomposition naive_chains(const Polygon& p, Counters& counters) {
   std::vector<VertexId> notches;
   std::vector<Chain> chains;
-  ChainBuilder(p).build(notches, chains);
+  boundary::split_into_chains(p, notches, chains);
   const std::int64_t pseudo_notches = static_cast<std::int64_t>(chains.size());
   ChainSearch search(p, std::move(chains));
   Decomposition d = naive::resolve(p, Decomposition{}, notches, search, counters);
