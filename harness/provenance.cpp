@@ -43,7 +43,9 @@ std::vector<std::pair<std::string, std::string>> provenance() {
   const std::string git = "git -C '" PD_SOURCE_DIR "' ";
   std::string commit = command_output(git + "rev-parse HEAD 2>/dev/null");
   if (commit.empty()) commit = PD_GIT_COMMIT;
-  const std::string dirty = command_output(git + "status --porcelain --untracked-files=no 2>/dev/null");
+  // Dirty means changed sources: results/ is where sweeps write, so a resumed sweep is not "dirty".
+  const std::string dirty =
+      command_output(git + "status --porcelain --untracked-files=no -- . ':(exclude)results' 2>/dev/null");
   return {
       {"git_commit", commit},
       {"git_dirty", dirty.empty() ? "false" : "true"},
