@@ -157,6 +157,15 @@ def _mentions(tree, variable):
     return tree[0] == "call" and any(_mentions(a, variable) for a in tree[2])
 
 
+def _terms(tree):
+    """The additive terms of a bound, through sums and the arguments of min and max."""
+    if tree[0] == "op" and tree[1] == "+":
+        return _terms(tree[2]) + _terms(tree[3])
+    if tree[0] == "call" and tree[1] in ("min", "max"):
+        return [term for argument in tree[2] for term in _terms(argument)]
+    return [tree]
+
+
 class TimeBound:
     """A claimed time bound f(n, r), evaluated in cost mode."""
 
@@ -166,6 +175,10 @@ class TimeBound:
 
     def __call__(self, n, r):
         return _evaluate(self._tree, {"n": float(n), "r": float(r)}, cost=True)
+
+    def terms(self):
+        """Its additive terms (through sums, min and max), each a TimeBound: "n*r+r^5" gives n*r and r^5."""
+        return [TimeBound(self.text, term) for term in _terms(self._tree)]
 
 
 def parse_time_bound(text):

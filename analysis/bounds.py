@@ -73,11 +73,11 @@ class CurveCheck:
     def __init__(self, label, points, claim):
         self.label = label
         self.fit = fit.fit_exponents(points)
-        self.claimed = fit.claimed_exponents(self.fit, claim) if self.fit else None
-        self.verdict = fit.verdict(self.fit, self.claimed) if self.fit else None
+        self.claims = fit.term_claims(self.fit, claim) if self.fit else None
+        self.verdict = fit.verdict(self.fit, self.claims) if self.fit else None
 
     def excess(self):
-        return max(self.fit.combination(w) - sum(w[k] * self.claimed[k] for k in w)
+        return max(self.fit.combination(w) - fit.claim_along(self.claims, w)
                    for _, w in fit.directions(self.fit.names))
 
 

@@ -109,7 +109,7 @@ def _plot_with_slopes(ax, mine, claim_text, algorithm, style):
     if f and "a" in f.names:
         label += " (a={:.2f}".format(f.value("a"))
         if claim:
-            label += ", claim {:.2f}".format(fit.claimed_exponents(f, claim)["a"])
+            label += ", claim {:.2f}".format(fit.claim_along(fit.term_claims(f, claim), {"a": 1.0}))
         label += ")"
     ax.plot(xs, ys, marker=marker, color=colour, label=label, linewidth=1.2, markersize=4)
     if f and f.names == ["a"]:

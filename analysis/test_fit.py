@@ -59,7 +59,7 @@ class FitTest(unittest.TestCase):
 
     def verdict(self, a, b, claim, reflexes):
         f = fit.fit_exponents(power_law(a, b, SIZES, reflexes, noise=0.01))
-        return fit.verdict(f, fit.claimed_exponents(f, bound_expr.parse_time_bound(claim)))
+        return fit.verdict(f, fit.term_claims(f, bound_expr.parse_time_bound(claim)))
 
     def test_verdicts(self):
         self.assertEqual(self.verdict(2, 0, "n^2", lambda n: [n // 4]), "consistent")
@@ -72,13 +72,20 @@ class FitTest(unittest.TestCase):
 
     def test_a_narrow_range_is_inconclusive(self):
         f = fit.fit_exponents(power_law(4.5, 0.0, [30, 40, 50, 60, 70, 80, 90, 100], lambda n: [0]))
-        text = fit.verdict(f, fit.claimed_exponents(f, bound_expr.parse_time_bound("n^4")))
+        text = fit.verdict(f, fit.term_claims(f, bound_expr.parse_time_bound("n^4")))
         self.assertTrue(text.startswith("inconclusive: fitted a=4.50"), text)
         self.assertIn("spanning only a factor 1.4", text)  # the larger half: 70..100
 
     def test_growth_in_r_bounded_by_n_is_not_a_contradiction(self):
         # t = n^1.5 r^0.5 <= n^2 since r <= n: b > 0 alone must not contradict "n^2".
         self.assertTrue(self.verdict(1.5, 0.5, "n^2", lambda n: [8, n // 8, n // 4]).startswith("consistent"))
+
+    def test_any_term_of_a_sum_may_dominate(self):
+        # t = n at r = 16 against n*r + r^5: the sum with unit constants barely grows in n there, but the
+        # n*r term allows slope 1.
+        self.assertEqual(self.verdict(1, 0, "n*r+r^5", lambda n: [16]), "consistent")
+        self.assertTrue(self.verdict(2, 0, "n*r+r^5", lambda n: [16]).startswith("CONTRADICTED: fitted a=2.00"))
+        self.assertEqual(self.verdict(1, 0, "min(n*r^2, r^4)", lambda n: [16]), "consistent")
 
     def test_claimed_exponents_include_log_factors(self):
         f = fit.fit_exponents(power_law(1, 0, SIZES, lambda n: [0]))
