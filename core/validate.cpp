@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace pd {
@@ -50,8 +51,6 @@ bool wide_is_exact(const std::vector<Point>& pts, const std::vector<Piece>& piec
   for (const Piece& piece : pieces) edges += piece.size();
   return edges < kWideEdges;
 }
-bool wide_is_exact(const std::vector<QPoint>&, const std::vector<Piece>&) { return false; }
-Wide twice_area_wide(const std::vector<QPoint>&, const Piece&) { throw std::logic_error("rational points in 128 bits"); }
 
 // The area test: the first piece whose area is not positive (clockwise or flat), and whether the
 // areas add up to the polygon's, whose vertices are the first n points.
@@ -75,8 +74,10 @@ AreaCheck check_areas(std::size_t n, const std::vector<Piece>& pieces, AreaOf tw
 
 template <class P>
 AreaCheck check_areas(std::size_t n, const std::vector<P>& pts, const std::vector<Piece>& pieces) {
-  if (wide_is_exact(pts, pieces))
-    return check_areas<Wide>(n, pieces, [&](const Piece& piece) { return twice_area_wide(pts, piece); });
+  if constexpr (std::is_same_v<P, Point>) {
+    if (wide_is_exact(pts, pieces))
+      return check_areas<Wide>(n, pieces, [&](const Piece& piece) { return twice_area_wide(pts, piece); });
+  }
   return check_areas<Rational>(n, pieces, [&](const Piece& piece) { return twice_area(pts, piece); });
 }
 
