@@ -225,6 +225,29 @@ TEST(ChazelleDobkin, ReachesTheXPatternOptimum) {
     }
 }
 
+// The x4-quads family: m groups of four slits, each resolved only by an X4-pattern, 3m + 1 pieces where
+// diagonals need 4m + 1 (the family's header proves both). The program's m patterns are X4-patterns.
+TEST(ChazelleDobkin, ReachesTheX4QuadsOptimum) {
+  for (std::size_t m = 1; m <= 8; ++m)
+    for (std::uint64_t seed : {1, 2}) {
+      const std::size_t r = 4 * m, n = 3 * r + 4 + (seed == 1 ? 0 : 2 * r + 3);
+      const Polygon p = Polygon::make(generate("x4-quads", n, r, seed));
+      const std::string where = label({"x4-quads", n, r, seed});
+      Counters diagonal;
+      EXPECT_EQ(keil_snoeyink(p, diagonal).cuts.size() + 1, 4 * m + 1) << where;
+      for (const std::string& name : programs()) {
+        Counters counters;
+        const Decomposition d = find_algorithm(name)->run(p, counters);
+        const Validation v = validate(p, d, Kind::Convex, true);
+        EXPECT_TRUE(v.ok) << name << " on " << where << ": " << v.reason;
+        EXPECT_EQ(pieces_of(p, d).size(), 3 * m + 1) << name << " on " << where;
+        EXPECT_EQ(counters["patterns"], static_cast<std::int64_t>(m)) << name << " on " << where;
+        EXPECT_EQ(counters["pattern_steiner_points"], static_cast<std::int64_t>(2 * m)) << name << " on " << where;
+        EXPECT_GT(counters["x4_found"], 0) << name << " on " << where;
+      }
+    }
+}
+
 // The program finds at least as many compatible patterns as an exhaustive search over the X2- and
 // X3-patterns of bare notches (pairwise disjoint, notches not interleaving round the boundary): it
 // also builds larger Y-patterns and X4-patterns, so it may find more, never fewer.
