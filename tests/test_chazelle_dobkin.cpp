@@ -106,6 +106,30 @@ TEST(ChazelleDobkinPatterns, XPatternTriangleHasItsX3AndNoX2) {
   EXPECT_EQ(pieces_of(p, d).size(), 3u);
 }
 
+// x4-quads: no notch sees another inside its range and no point lies in three ranges (the family's
+// header, (i) and (ii)), so no X2- or X3-pattern between bare notches.
+TEST(ChazelleDobkinPatterns, X4QuadsHaveNoX2OrX3) {
+  for (std::size_t m : {1, 2, 3})
+    for (std::uint64_t seed : {1, 2}) {
+      const std::size_t r = 4 * m, n = 3 * r + 4 + 9 * (seed - 1);
+      const Polygon p = Polygon::make(generate("x4-quads", n, r, seed));
+      const std::string where = label({"x4-quads", n, r, seed});
+      cd::Patterns patterns(p);
+      ASSERT_EQ(patterns.notches().size(), r) << where;
+      for (std::size_t i = 0; i < r; ++i)
+        for (std::size_t j = 0; j < r; ++j) {
+          if (i != j) {
+            EXPECT_FALSE(patterns.x2(patterns.bare(i), patterns.bare(j))) << where << " notches " << i << ", " << j;
+          }
+          for (std::size_t k = j + 1; i < j && k < r; ++k) {
+            EXPECT_FALSE(patterns.x3(patterns.joint(patterns.bare(i)), patterns.joint(patterns.bare(j)),
+                                     patterns.joint(patterns.bare(k))))
+                << where << " notches " << i << ", " << j << ", " << k;
+          }
+        }
+    }
+}
+
 // Every X3 found is a pattern: with it, the naive decomposition of the rest gives r pieces, valid.
 TEST(ChazelleDobkinPatterns, EveryX3FoundSavesOnePiece) {
   std::size_t found = 0;
