@@ -106,7 +106,7 @@ TEST(ChazelleDobkinPatterns, XPatternTriangleHasItsX3AndNoX2) {
   EXPECT_EQ(pieces_of(p, d).size(), 3u);
 }
 
-// x4-quads: no notch sees another inside its range and no point lies in three ranges (the family's
+// x4-quads: no notch lies in another's range and no point lies in three ranges (the family's
 // header, (i) and (ii)), so no X2- or X3-pattern between bare notches.
 TEST(ChazelleDobkinPatterns, X4QuadsHaveNoX2OrX3) {
   for (std::size_t m : {1, 2, 3})
@@ -121,12 +121,13 @@ TEST(ChazelleDobkinPatterns, X4QuadsHaveNoX2OrX3) {
           if (i != j) {
             EXPECT_FALSE(patterns.x2(patterns.bare(i), patterns.bare(j))) << where << " notches " << i << ", " << j;
           }
-          for (std::size_t k = j + 1; i < j && k < r; ++k) {
+        }
+      for (std::size_t i = 0; i < r; ++i)
+        for (std::size_t j = i + 1; j < r; ++j)
+          for (std::size_t k = j + 1; k < r; ++k)
             EXPECT_FALSE(patterns.x3(patterns.joint(patterns.bare(i)), patterns.joint(patterns.bare(j)),
                                      patterns.joint(patterns.bare(k))))
                 << where << " notches " << i << ", " << j << ", " << k;
-          }
-        }
     }
 }
 
