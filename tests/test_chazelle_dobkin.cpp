@@ -106,6 +106,31 @@ TEST(ChazelleDobkinPatterns, XPatternTriangleHasItsX3AndNoX2) {
   EXPECT_EQ(pieces_of(p, d).size(), 3u);
 }
 
+// x4-quads: no notch lies in another's range and no point lies in three ranges (the family's
+// header, (i) and (ii)), so no X2- or X3-pattern between bare notches.
+TEST(ChazelleDobkinPatterns, X4QuadsHaveNoX2OrX3) {
+  for (std::size_t m : {1, 2, 3})
+    for (std::uint64_t seed : {1, 2}) {
+      const std::size_t r = 4 * m, n = 3 * r + 4 + 9 * (seed - 1);
+      const Polygon p = Polygon::make(generate("x4-quads", n, r, seed));
+      const std::string where = label({"x4-quads", n, r, seed});
+      cd::Patterns patterns(p);
+      ASSERT_EQ(patterns.notches().size(), r) << where;
+      for (std::size_t i = 0; i < r; ++i)
+        for (std::size_t j = 0; j < r; ++j) {
+          if (i != j) {
+            EXPECT_FALSE(patterns.x2(patterns.bare(i), patterns.bare(j))) << where << " notches " << i << ", " << j;
+          }
+        }
+      for (std::size_t i = 0; i < r; ++i)
+        for (std::size_t j = i + 1; j < r; ++j)
+          for (std::size_t k = j + 1; k < r; ++k)
+            EXPECT_FALSE(patterns.x3(patterns.joint(patterns.bare(i)), patterns.joint(patterns.bare(j)),
+                                     patterns.joint(patterns.bare(k))))
+                << where << " notches " << i << ", " << j << ", " << k;
+    }
+}
+
 // Every X3 found is a pattern: with it, the naive decomposition of the rest gives r pieces, valid.
 TEST(ChazelleDobkinPatterns, EveryX3FoundSavesOnePiece) {
   std::size_t found = 0;
@@ -222,6 +247,29 @@ TEST(ChazelleDobkin, ReachesTheXPatternOptimum) {
       const Polygon p = Polygon::make(generate("x-pattern", n, 3 * m, seed));
       for (const std::string& name : programs())
         EXPECT_EQ(valid_pieces(name, p, "x-pattern m=" + std::to_string(m)), 2 * m + 1) << name << " m=" << m;
+    }
+}
+
+// The x4-quads family: m groups of four slits, each resolved only by an X4-pattern, 3m + 1 pieces where
+// diagonals need 4m + 1 (the family's header proves both). The program's m patterns are X4-patterns.
+TEST(ChazelleDobkin, ReachesTheX4QuadsOptimum) {
+  for (std::size_t m = 1; m <= 8; ++m)
+    for (std::uint64_t seed : {1, 2}) {
+      const std::size_t r = 4 * m, n = 3 * r + 4 + (seed == 1 ? 0 : 2 * r + 3);
+      const Polygon p = Polygon::make(generate("x4-quads", n, r, seed));
+      const std::string where = label({"x4-quads", n, r, seed});
+      Counters diagonal;
+      EXPECT_EQ(keil_snoeyink(p, diagonal).cuts.size() + 1, 4 * m + 1) << where;
+      for (const std::string& name : programs()) {
+        Counters counters;
+        const Decomposition d = find_algorithm(name)->run(p, counters);
+        const Validation v = validate(p, d, Kind::Convex, true);
+        EXPECT_TRUE(v.ok) << name << " on " << where << ": " << v.reason;
+        EXPECT_EQ(pieces_of(p, d).size(), 3 * m + 1) << name << " on " << where;
+        EXPECT_EQ(counters["patterns"], static_cast<std::int64_t>(m)) << name << " on " << where;
+        EXPECT_EQ(counters["pattern_steiner_points"], static_cast<std::int64_t>(2 * m)) << name << " on " << where;
+        EXPECT_GT(counters["x4_found"], 0) << name << " on " << where;
+      }
     }
 }
 

@@ -17,6 +17,7 @@ namespace {
 constexpr std::size_t kMaxN = 2'000'000;
 constexpr std::size_t kMaxXPatternN = 1'000'000;
 constexpr std::size_t kMaxX2PairsN = 1'000'000;
+constexpr std::size_t kMaxX4QuadsN = 1'000'000;
 
 struct IntPoint {
   std::int64_t x, y;
@@ -145,6 +146,8 @@ const std::map<std::string, std::function<bool(std::size_t, std::size_t)>>& docu
        }},
       {"x2-pairs",
        [](std::size_t n, std::size_t r) { return n <= kMaxX2PairsN && r >= 2 && r % 2 == 0 && n >= 3 * r + 4; }},
+      {"x4-quads",
+       [](std::size_t n, std::size_t r) { return n <= kMaxX4QuadsN && r >= 4 && r % 4 == 0 && n >= 3 * r + 4; }},
   };
   return ranges;
 }
@@ -174,7 +177,7 @@ TEST(Generators, RegistryListsTheFamiliesSortedByName) {
   std::vector<std::string> names;
   for (const Family& f : families()) names.push_back(f.name);
   EXPECT_EQ(names, (std::vector<std::string>{"comb", "convex", "few-notches", "notch-heavy", "random",
-                                             "spiral", "x-pattern", "x2-pairs"}));
+                                             "spiral", "x-pattern", "x2-pairs", "x4-quads"}));
   ASSERT_NE(find_family("spiral"), nullptr);
   EXPECT_EQ(find_family("spiral")->name, "spiral");
   EXPECT_EQ(find_family("no-such"), nullptr);
@@ -196,7 +199,7 @@ TEST(Generators, UnknownFamilyNamesTheFamilies) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "unknown family hexagon; families: comb, convex, few-notches, notch-heavy, random, spiral, "
-              "x-pattern, x2-pairs");
+              "x-pattern, x2-pairs, x4-quads");
   }
 }
 
@@ -274,6 +277,13 @@ TEST(Generators, MediumSizesAtTheEdgesOfTheRanges) {
   }
 }
 
+// x4-quads at every r it is tested with elsewhere (1 to 8 groups), at its least n and beyond.
+TEST(Generators, QuadsAreSimpleWithExactlyRNotches) {
+  for (std::size_t r : {4, 8, 12, 16, 20, 24, 28, 32})
+    for (std::size_t n : {3 * r + 4, 3 * r + 5, 3 * r + 17, 10 * r})
+      for (std::uint64_t seed : {1, 2, 3}) expect_valid("x4-quads", n, r, seed);
+}
+
 TEST(Generators, DefaultReflexIsFeasible) {
   for (const Family& f : families()) {
     std::size_t least = 0;
@@ -317,6 +327,8 @@ TEST(Generators, ChecksumsArePinned) {
       {"x-pattern", 500, 30, 8, 0x68a8b6a2ca73f126ULL},
       {"x2-pairs", 10, 2, 1, 0x0d73b324820f56ccULL},
       {"x2-pairs", 600, 60, 3, 0x8d7b5fdb215f625cULL},
+      {"x4-quads", 16, 4, 1, 0xc10f4616a04c1751ULL},
+      {"x4-quads", 700, 32, 3, 0xeacba1b31c3f0775ULL},
   };
   for (const Case& c : cases) {
     EXPECT_EQ(fnv1a(generate(c.family, c.n, c.r, c.seed)), c.fnv)
@@ -345,6 +357,8 @@ TEST(Generators, MillionVertices) {
   expect_large_valid("notch-heavy", 1'000'000, 999'997);
   expect_large_valid("x2-pairs", 1'000'000, 2);
   expect_large_valid("x2-pairs", 1'000'000, 333'332);
+  expect_large_valid("x4-quads", 1'000'000, 4);
+  expect_large_valid("x4-quads", 1'000'000, 333'332);
 }
 
 }  // namespace

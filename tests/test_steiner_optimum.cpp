@@ -177,6 +177,21 @@ TEST(SteinerOptimumCheck, PairsReachHalfTheNotchesPlusOne) {
       }
 }
 
+// One group of x4-quads is four_slits() with bulging sides: one X4-pattern, 4 pieces (above Theorem 8's
+// bound, so not `proven_optimal`; the family's header proves it); 5 with diagonals.
+TEST(SteinerOptimumCheck, QuadsGroupNeedsItsX4Pattern) {
+  for (std::size_t n : {17, 21, 28})
+    for (std::uint64_t seed : {1, 2}) {
+      const std::string label = label_of("x4-quads", n, 4, seed);
+      const Polygon p = Polygon::make(generate("x4-quads", n, 4, seed));
+      const steiner_check::Result result = checked(p, label);
+      EXPECT_EQ(result.pieces, 4u) << label;
+      ASSERT_EQ(result.patterns.size(), 1u) << label;
+      EXPECT_EQ(result.patterns[0].steiner.size(), 2u) << label;
+      EXPECT_EQ(diagonal_optimum(p), 5u) << label;
+    }
+}
+
 // Theorem 8's bounds, and never above the optimum with diagonals only.
 void expect_within_bounds(const Case& c) {
   const std::size_t pieces = checker_count(c);
@@ -259,6 +274,17 @@ TEST(SteinerOptimalPrograms, ReachHalfTheNotchesPlusOneOnPairs) {
       const std::size_t n = 3 * r + 4 + 3 * seed;
       const Polygon p = Polygon::make(generate("x2-pairs", n, r, seed));
       expect_programs_agree(p, r / 2 + 1, label_of("x2-pairs", n, r, seed));
+    }
+}
+
+// x4-quads with m groups: 3m + 1 pieces (one X4-pattern per group, the family's header proves it).
+TEST(SteinerOptimalPrograms, ReachOneX4PatternPerGroupOnQuads) {
+  if (steiner_optimal_programs().empty()) GTEST_SKIP() << "nothing to compare (see AreRegistered)";
+  for (std::size_t m : {1, 3, 6})
+    for (std::uint64_t seed : {4, 5}) {
+      const std::size_t r = 4 * m, n = 3 * r + 4 + 5 * seed;
+      const Polygon p = Polygon::make(generate("x4-quads", n, r, seed));
+      expect_programs_agree(p, 3 * m + 1, label_of("x4-quads", n, r, seed));
     }
 }
 
