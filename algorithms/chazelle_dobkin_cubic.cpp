@@ -21,8 +21,9 @@
 //     the X4 term changes S(i, j) only if some X4-pattern reaches exactly S(i+1, j-1) + 1.
 // (2) Tightness factors. With a = S(i+1, k-1), b = S(k+1, l-1), c = S(l+1, j-1):
 //     a + b + c <= a + S(k+1, j-1) <= S(i+1, j-1), so a + b + c = S(i+1, j-1) iff
-//       T(i, j; k): S(i+1, k-1) + S(k+1, j-1) = S(i+1, j-1)   and   T(k, j; l): S(k+1, l-1) + S(l+1, j-1) = S(k+1, j-1),
-//     and, splitting at l first, iff T(i, j; l) and T(i, l; k).
+//       T(i, j; k): S(i+1, k-1) + S(k+1, j-1) = S(i+1, j-1)  and
+//       T(k, j; l): S(k+1, l-1) + S(l+1, j-1) = S(k+1, j-1),
+//     and, splitting at l first (a + b <= S(i+1, l-1)), iff T(i, j; l) and T(i, l; k).
 // (3) The two pairings (Figure 2.24-a, -b) give two tables.
 //     E(k, j)[i], for i < k < j: some l in (k, j) with T(k, j; l) and an X4-pattern whose first Steiner
 //       point joins z_i and z_k and whose second joins z_l and z_j. It needs S only strictly inside
@@ -41,27 +42,31 @@
 // Deviations.
 // - The Steiner points are the tips of Q of Theorem 15 (chazelle_dobkin_patterns.h), the same as
 //   chazelle-dobkin-n5's, not the thesis's loose points A_ik = r_i ∩ r_k of Theorem 18 (every notch
-//   edge lined up with the extension of the notch's forward edge). So the same patterns are found as
-//   by chazelle-dobkin-n5, which the tests check count for count, but the tips of pairs sharing a
-//   notch do not lie on one segment r_i, and the thesis's sorted lists and its two-way scan do not
-//   apply to them. Theorem 18's proof (Figure 2.31) and the scan are lost with the figures and the end
-//   of the OCR text; this file does not reconstruct them.
+//   edge lined up with the extension of the notch's forward edge). So exactly the X4-patterns of
+//   chazelle-dobkin-n5 are found, which the tests check count for count. A tip joining a and b (a
+//   before b) whose edges are not clipped by a view or by the line ab has a's edge along the
+//   extension of a's backward edge and b's along r_b: one of Definition 2.4's 16 loose configurations,
+//   so the second Steiner points of E(k, j) lie on r_j and the first on r_k, as in the thesis; clipped
+//   tips do not, and the thesis's sorted lists and two-way scan are not used. Theorem 18's proof
+//   (Figure 2.31) and the scan are lost with the figures and the end of the OCR text; this file does
+//   not reconstruct them.
 // - E(k, j) and W(i, l) are filled by a loop: over the outer notches whose tip exists, over the tight
 //   inner notches whose tip exists, stopping at the first X4-pattern. Each test is O(1) (tips cached,
-//   half-planes and crossings) and only its survivors test the segment between the Steiner points
-//   against the boundary's convex chains, O(r log(n/r)). That is O(r^2) tests per interval in the
-//   worst case, where the thesis's scan takes O(r); in practice tips exist for few pairs of notches
-//   and the loop is short (see the counters).
+//   half-planes, crossings) and only its survivors test the segment between the Steiner points against
+//   the boundary's convex chains, O(r log(n/r)). A test pairs a first tip with a second tip, and each
+//   such pair is tested at most once per table (the four notches name the entry and the candidate):
+//   with t the number of tips that exist (counter "tips_found", t <= r^2), O(r^3 + t^2) tests, where
+//   the thesis's scan takes O(r^3). Tips exist for few pairs of notches in the families measured.
 // - Preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (chazelle_dobkin.h): visibility
 //   in place of superranges, and Y-pattern tests that check segments against the boundary.
 //
 // Time: O(n log n + n r + r^2 log n) preprocessing; tips O(r^2) times O(r log(n/r)); STEPs 2 and 4
-// O(r^4 log(n/r)) (chazelle_dobkin.h); STEP 3's X4 term O(r^3) lookups; the tables O(r^4) tests, each
-// O(1) or O(r log(n/r)): O(n log n + n r + r^5 log(n/r)) in the worst case, as chazelle-dobkin-n5,
-// with the r^5 term only in the tables' boundary tests. Space O(n + r^3) (the tables, one entry per
-// outer notch and interval, only for intervals with a witness). Pre: a simple counter-clockwise
-// polygon with fewer than 32768 notches. Output: an optimal convex decomposition (OPT = r + 1 - the
-// most compatible patterns), Steiner points exact.
+// O(r^4 log(n/r)) (chazelle_dobkin.h); STEP 3's X4 term O(r^3) lookups; the tables O(r^3 + t^2)
+// tests, each O(1) or O(r log(n/r)). Worst case (t = r^2) O(n log n + n r + r^5 log(n/r)), as
+// chazelle-dobkin-n5, which makes Theta(r^4) O(1) steps on every polygon where this makes O(r^3 + t^2).
+// Space O(n + r^3) (the tables, one entry per outer notch and interval, only for intervals with a
+// witness). Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
+// convex decomposition (OPT = r + 1 - the most compatible patterns), Steiner points exact.
 //
 // Counters, besides the program's and the patterns': "x4_table_entries" (outer notches with a tip
 // examined for E and W), "x4_table_witnesses" (entries that found a pattern), "x4_candidates" (pairs
@@ -111,6 +116,8 @@ class ProgramCubic final : public cd::Program {
   // T(a, b; m): splitting V(a+1, b-1) at m loses nothing.
   bool tight(int a, int b, int m) const { return S(a + 1, m - 1) + S(m + 1, b - 1) == S(a + 1, b - 1); }
 
+  bool has_tip(int a, int b) { return patterns().has_tip(static_cast<std::size_t>(a), static_cast<std::size_t>(b)); }
+
   static int witness(const Row& row, int index) { return row.empty() ? -1 : row[static_cast<std::size_t>(index)]; }
 
   // STEP 3's X4 term: a tight X4-pattern from E(k, j)[i] or W(i, l)[j], with its Steiner points.
@@ -140,12 +147,12 @@ class ProgramCubic final : public cd::Program {
   void fill_e(int k, int j) {
     std::vector<int> seconds;
     for (int l = k + 1; l < j; ++l)
-      if (tight(k, j, l) && patterns().has_tip(static_cast<std::size_t>(l), static_cast<std::size_t>(j))) seconds.push_back(l);
+      if (tight(k, j, l) && has_tip(l, j)) seconds.push_back(l);
     if (seconds.empty()) return;
     Row row(static_cast<std::size_t>(k), -1);
     bool any = false;
     for (int i = 0; i < k; ++i) {
-      if (!patterns().has_tip(static_cast<std::size_t>(i), static_cast<std::size_t>(k))) continue;
+      if (!has_tip(i, k)) continue;
       const int l = first_pattern(seconds, [&](int m) { return patterns().x4(i, k, m, j).has_value(); });
       row[static_cast<std::size_t>(i)] = static_cast<std::int16_t>(l);
       any = any || l >= 0;
@@ -158,12 +165,12 @@ class ProgramCubic final : public cd::Program {
   void fill_w(int i, int l) {
     std::vector<int> firsts;
     for (int k = i + 1; k < l; ++k)
-      if (tight(i, l, k) && patterns().has_tip(static_cast<std::size_t>(k), static_cast<std::size_t>(l))) firsts.push_back(k);
+      if (tight(i, l, k) && has_tip(k, l)) firsts.push_back(k);
     if (firsts.empty()) return;
     Row row(static_cast<std::size_t>(notch_count_ - l - 1), -1);
     bool any = false;
     for (int j = l + 1; j < notch_count_; ++j) {
-      if (!patterns().has_tip(static_cast<std::size_t>(j), static_cast<std::size_t>(i))) continue;
+      if (!has_tip(j, i)) continue;
       const int k = first_pattern(firsts, [&](int m) { return patterns().x4(m, l, j, i).has_value(); });
       row[static_cast<std::size_t>(j - l - 1)] = static_cast<std::int16_t>(k);
       any = any || k >= 0;

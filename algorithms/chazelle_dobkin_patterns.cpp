@@ -274,6 +274,7 @@ const std::optional<QPoint>& Patterns::tip(std::size_t a, std::size_t b) {
   if (s <= 0 || t <= 0) return out;
   const QPoint x(pa.x() + s * da.x(), pa.y() + s * da.y());
   if (orient(pa, pb, x) <= 0 || !sees(va, x) || !sees(vb, x)) return out;
+  ++tips_found_;
   out = x;
   return out;
 }
@@ -316,6 +317,7 @@ void Patterns::report(Counters& counters) const {
   counters["x4_tests"] += x4_tests_;
   counters["x4_found"] += x4_found_;
   counters["tips"] += tips_;
+  counters["tips_found"] += tips_found_;
   counters["segment_search_steps"] += segments_.steps();
 }
 

@@ -149,8 +149,8 @@ class Patterns {
   bool inside(const QPoint& s, const QPoint& t) const;
 
   // Counts "x2_tests", "x2_found", "x3_tests", "x3_candidates" (past the half-planes), "x3_found",
-  // "x4_tests", "x4_found", "tips", "segment_search_steps" (binary-search steps and edges tested by sees
-  // and inside).
+  // "x4_tests", "x4_found", "tips" (computed), "tips_found" (that exist), "segment_search_steps"
+  // (binary-search steps and edges tested by sees and inside).
   void report(Counters& counters) const;
 
  private:
@@ -180,7 +180,7 @@ class Patterns {
   std::vector<char> tip_known_;
   std::vector<std::optional<QPoint>> tip_;
   std::int64_t x2_tests_ = 0, x2_found_ = 0, x3_tests_ = 0, x3_candidates_ = 0, x3_found_ = 0;
-  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0;
+  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0, tips_found_ = 0;
 };
 
 }  // namespace pd::cd
