@@ -369,10 +369,12 @@ TEST(ChazelleDobkinTables, SameCountOnEveryRotation) {
 }
 
 // Every table witness is an entry, every entry an outer notch with a tip, and each tested at least one
-// candidate pair; STEP 3 looks up at most 2 (j - i - 1) entries per interval; an X4 chosen needs a witness.
+// candidate pair; STEP 3 looks up at most 2 (j - i - 1) entries per interval; an X4 chosen needs a witness;
+// the tables test at most 2 t^2 pairs, t the tips that exist.
 TEST(ChazelleDobkinTables, CountersAddUp) {
   std::vector<Sample> samples = small_samples();
   samples.push_back({"random", 60, 20, 1});
+  std::int64_t tested = 0;
   for (const Sample& s : samples) {
     const Polygon p = make(s);
     const std::int64_t r = static_cast<std::int64_t>(p.reflex_count());
@@ -384,7 +386,11 @@ TEST(ChazelleDobkinTables, CountersAddUp) {
     EXPECT_LE(counters["x4_table_witnesses"], counters["x4_found"]) << label(s);
     EXPECT_LE(counters["x4_scan_steps"], r * r * r / 3) << label(s);
     EXPECT_LE(counters["x4_chosen"], counters["x4_table_witnesses"]) << label(s);
+    // Each table tests a pair of existing tips at most once (the header's O(r^3 + t^2)).
+    EXPECT_LE(counters["x4_candidates"], 2 * counters["tips_found"] * counters["tips_found"]) << label(s);
+    tested += counters["x4_candidates"];
   }
+  EXPECT_GT(tested, 0);
   Counters convex;
   find_algorithm("chazelle-dobkin")->run(Polygon::make(generate("convex", 9, 0, 1)), convex);
   EXPECT_EQ(convex["x4_candidates"] + convex["x4_scan_steps"] + convex["x4_table_entries"], 0);
