@@ -175,13 +175,13 @@ class Program {
       const int count = free_b(i, k - 1) + free_b(k, j - 1) + 1;
       if (count <= best.count) continue;
       const auto s = patterns_.x3(patterns_.joint(with_b(i, k - 1)), patterns_.joint(with_b(k, j - 1)),
-                                  patterns_.joint(patterns_.bare(j)));
+                                  patterns_.bare_joint(j));
       if (s) ++y_found_, offer(count, {0, Way::Y3, k, 0, false, *s});
     }
     for (int k = i + 1; k < j; ++k) {  // Y4: a Steiner point joining z_i and z_k, z_j (subtrees behind)
       const int count = free_f(i + 1, k) + free_f(k + 1, j) + 1;
       if (count <= best.count) continue;
-      const auto s = patterns_.x3(patterns_.joint(patterns_.bare(i)), patterns_.joint(with_f(i + 1, k)),
+      const auto s = patterns_.x3(patterns_.bare_joint(i), patterns_.joint(with_f(i + 1, k)),
                                   patterns_.joint(with_f(k + 1, j)));
       if (s) ++y_found_, offer(count, {0, Way::Y4, k, 0, false, *s});
     }
@@ -191,11 +191,11 @@ class Program {
 
   // Whether an edge from notch v to `far` hangs forward and leaves v's angle on its other side reflex.
   bool hangs_forward(int v, const QPoint& far) const {
-    const Joint j = patterns_.forward_branch(v);
+    const Joint& j = patterns_.forward_branch(v);
     return orient(z(v), j.lower, far) > 0 && orient(z(v), j.upper, far) < 0;
   }
   bool hangs_backward(int v, const QPoint& far) const {
-    const Joint j = patterns_.backward_branch(v);
+    const Joint& j = patterns_.backward_branch(v);
     return orient(z(v), j.lower, far) > 0 && orient(z(v), j.upper, far) < 0;
   }
 

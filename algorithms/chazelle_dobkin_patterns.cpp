@@ -103,6 +103,7 @@ Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segment
   transition_.assign(r * r, 0);
   tip_known_.assign(r * r, 0);
   tip_.assign(r * r, std::nullopt);
+  compute_bare_cones();
   if (r == 0) return;
   const VisibilityGraph visibility(p);
   std::vector<std::uint32_t> visible;
@@ -140,25 +141,28 @@ void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint
   }
 }
 
-AdaptedNotch Patterns::bare(std::size_t notch) const {
-  const VertexId v = notches_[notch];
-  return {notch, at(static_cast<VertexId>(p_.next(v))), at(static_cast<VertexId>(p_.prev(v)))};
+// The bare notches with their joints and branches, O(r).
+void Patterns::compute_bare_cones() {
+  for (std::size_t k = 0; k < notches_.size(); ++k) {
+    const VertexId v = notches_[k];
+    const QPoint &pv = at(v), &after = at(static_cast<VertexId>(p_.next(v))), &before = at(static_cast<VertexId>(p_.prev(v)));
+    bare_.push_back({k, after, before});
+    bare_joint_.push_back(cone(bare_.back()));
+    forward_branch_.push_back({k, after, mirrored(pv, before)});
+    backward_branch_.push_back({k, mirrored(pv, after), before});
+  }
 }
 
-Joint Patterns::joint(const AdaptedNotch& a) const {
+Joint Patterns::cone(const AdaptedNotch& a) const {
   const QPoint& v = notch_point(a.notch);
   if (cross(a.forward - v, a.backward - v) < 0) return {a.notch, mirrored(v, a.backward), mirrored(v, a.forward)};
   return {a.notch, a.forward, a.backward};
 }
 
-Joint Patterns::forward_branch(std::size_t notch) const {
-  const VertexId v = notches_[notch];
-  return {notch, at(static_cast<VertexId>(p_.next(v))), mirrored(at(v), at(static_cast<VertexId>(p_.prev(v))))};
-}
-
-Joint Patterns::backward_branch(std::size_t notch) const {
-  const VertexId v = notches_[notch];
-  return {notch, mirrored(at(v), at(static_cast<VertexId>(p_.next(v)))), at(static_cast<VertexId>(p_.prev(v)))};
+Joint Patterns::joint(const AdaptedNotch& a) const {
+  const AdaptedNotch& bare = bare_[a.notch];
+  if (a.forward == bare.forward && a.backward == bare.backward) return bare_joint_[a.notch];
+  return cone(a);
 }
 
 // The closed cone at an adapted notch: 180-degree angles allowed, the arms themselves not.
@@ -251,7 +255,7 @@ const std::optional<QPoint>& Patterns::tip(std::size_t a, std::size_t b) {
   ++tips_;
   const VertexId va = notches_[a], vb = notches_[b];
   const QPoint &pa = at(va), &pb = at(vb);
-  const Joint ja = joint(bare(a)), jb = joint(bare(b));
+  const Joint &ja = bare_joint(a), &jb = bare_joint(b);
   const Vec ref_a = at(static_cast<VertexId>(p_.next(va))) - pa;
   const Vec ref_b = at(static_cast<VertexId>(p_.next(vb))) - pb;
   QPoint from_a = ja.lower;
@@ -270,6 +274,7 @@ const std::optional<QPoint>& Patterns::tip(std::size_t a, std::size_t b) {
   if (s <= 0 || t <= 0) return out;
   const QPoint x(pa.x() + s * da.x(), pa.y() + s * da.y());
   if (orient(pa, pb, x) <= 0 || !sees(va, x) || !sees(vb, x)) return out;
+  ++tips_found_;
   out = x;
   return out;
 }
@@ -312,6 +317,7 @@ void Patterns::report(Counters& counters) const {
   counters["x4_tests"] += x4_tests_;
   counters["x4_found"] += x4_found_;
   counters["tips"] += tips_;
+  counters["tips_found"] += tips_found_;
   counters["segment_search_steps"] += segments_.steps();
 }
 

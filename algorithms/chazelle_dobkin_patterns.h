@@ -99,16 +99,18 @@ class Patterns {
   // The notches, in counter-clockwise (index) order.
   const std::vector<VertexId>& notches() const { return notches_; }
   const QPoint& notch_point(std::size_t notch) const { return exact_[notches_[notch]]; }
-  AdaptedNotch bare(std::size_t notch) const;
+  const AdaptedNotch& bare(std::size_t notch) const { return bare_[notch]; }
 
   // The cone that resolves what is left of the angle at a: between the extensions of its arms beyond
-  // it while that angle is reflex, between the arms themselves once it is not.
+  // it while that angle is reflex, between the arms themselves once it is not. A bare notch's is
+  // computed once (the program asks for it O(r^3) times).
   Joint joint(const AdaptedNotch& a) const;
+  const Joint& bare_joint(std::size_t notch) const { return bare_joint_[notch]; }
   // The directions of an edge hanging at a bare notch that leave the angle on its other side reflex:
   // on the forward side (between the forward edge and the extension of the backward edge), or on the
   // backward side.
-  Joint forward_branch(std::size_t notch) const;
-  Joint backward_branch(std::size_t notch) const;
+  const Joint& forward_branch(std::size_t notch) const { return forward_branch_[notch]; }
+  const Joint& backward_branch(std::size_t notch) const { return backward_branch_[notch]; }
 
   // Whether the segment between notches a and b is a diagonal (R(a, ab) = ab, Theorem 13). O(1).
   bool diagonal(std::size_t a, std::size_t b) const { return sees_notch_[a * notches_.size() + b]; }
@@ -135,6 +137,10 @@ class Patterns {
   // Steiner points face). Returns the two Steiner points or nothing. O(1) after the tips, then
   // O(r log(n/r)); a tip costs O(r log(n/r)) once.
   std::optional<std::pair<QPoint, QPoint>> x4(std::size_t a, std::size_t b, std::size_t c, std::size_t d);
+  // Whether the tip of Q facing the chain from notch a counter-clockwise to notch b exists: x4 finds
+  // nothing whose first (or second) Steiner point would be that tip when it does not. O(r log(n/r))
+  // the first time, O(1) after.
+  bool has_tip(std::size_t a, std::size_t b) { return tip(a, b).has_value(); }
 
   // Whether the open segment from polygon vertex v to point s lies in P's interior, s included.
   // O(r log(n/r)).
@@ -143,8 +149,8 @@ class Patterns {
   bool inside(const QPoint& s, const QPoint& t) const;
 
   // Counts "x2_tests", "x2_found", "x3_tests", "x3_candidates" (past the half-planes), "x3_found",
-  // "x4_tests", "x4_found", "tips", "segment_search_steps" (binary-search steps and edges tested by sees
-  // and inside).
+  // "x4_tests", "x4_found", "tips" (computed), "tips_found" (that exist), "segment_search_steps"
+  // (binary-search steps and edges tested by sees and inside).
   void report(Counters& counters) const;
 
  private:
@@ -153,6 +159,8 @@ class Patterns {
     return transition_[from * notches_.size() + towards];
   }
   void compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible);
+  void compute_bare_cones();
+  Joint cone(const AdaptedNotch& a) const;
   std::vector<QPoint> x3_region(const std::array<const Joint*, 3>& joints) const;
   std::optional<QPoint> verified(const QPoint& s, const std::array<const Joint*, 3>& joints);
   const std::optional<QPoint>& tip(std::size_t a, std::size_t b);
@@ -161,6 +169,9 @@ class Patterns {
   std::vector<QPoint> exact_;
   mutable boundary::SegmentSearch segments_;  // P's boundary in convex chains, for sees and inside
   std::vector<VertexId> notches_;
+  // Per notch: the bare notch, its joint and its two branches.
+  std::vector<AdaptedNotch> bare_;
+  std::vector<Joint> bare_joint_, forward_branch_, backward_branch_;
   // r x r: whether notch j's vertex is a diagonal's end seen from notch i; the vertex through which
   // notch i's view passes across notch j's boundary position (see the header comment).
   std::vector<char> sees_notch_;
@@ -169,7 +180,7 @@ class Patterns {
   std::vector<char> tip_known_;
   std::vector<std::optional<QPoint>> tip_;
   std::int64_t x2_tests_ = 0, x2_found_ = 0, x3_tests_ = 0, x3_candidates_ = 0, x3_found_ = 0;
-  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0;
+  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0, tips_found_ = 0;
 };
 
 }  // namespace pd::cd

@@ -29,7 +29,7 @@ TEST(Registry, HoldsEveryLandedAlgorithm) {
   for (const Algorithm& a : algorithms()) names.insert(a.name);
   const std::set<std::string> expected = {
       "cgal-cdt",       "cgal-greene",    "cgal-hertel-mehlhorn", "cgal-optimal",
-      "cgal-y-monotone", "chazelle-dobkin-n5", "cutting-convex", "cutting-tri",          "diagonal-n3",
+      "cgal-y-monotone", "chazelle-dobkin", "chazelle-dobkin-n5", "cutting-convex", "cutting-tri",          "diagonal-n3",
       "diagonal-n4",    "ear-n2",         "ear-n3",               "greene-dp",
       "greene-sweep",   "hertel-mehlhorn", "keil",                "keil-snoeyink",
       "keil-snoeyink-reduced", "min-ink",  "monotone",            "naive",

@@ -3,9 +3,11 @@
 // predicates; X3 (Theorem 14) by building the pattern, finishing with the naive decomposition and
 // validating the result exactly (a found pattern must save one piece), and, where it reports no
 // pattern, by a grid of candidate Steiner points checked against the definition.
-// Then the program (chazelle-dobkin-n5): valid, between ceil(r/2) + 1 and min(keil-snoeyink, r + 1)
+// Then the programs (chazelle-dobkin, chazelle-dobkin-n5): valid, between ceil(r/2) + 1 and min(keil-snoeyink, r + 1)
 // pieces, the known optimum of the x-pattern family (2m + 1) and of facing pairs of notches (r/2 + 1),
-// and at least as many patterns as an exhaustive search over compatible X2- and X3-patterns.
+// and at least as many patterns as an exhaustive search over compatible X2- and X3-patterns. Last,
+// chazelle-dobkin's X4 tables against chazelle-dobkin-n5's search of every pair: the same count on
+// every family and on every rotation, the X4-patterns of side-by-side slit gadgets, and its counters.
 #include "algorithms/chazelle_dobkin_patterns.h"
 #include "algorithms/keil_snoeyink.h"
 #include "algorithms/naive.h"
@@ -13,6 +15,7 @@
 #include "core/validate.h"
 #include "generators/family.h"
 #include "tests/brute_force.h"
+#include "tests/slit_gadgets.h"
 
 #include <gtest/gtest.h>
 
@@ -199,7 +202,7 @@ TEST(ChazelleDobkinPatterns, NoX3MissedOnAGrid) {
   }
 }
 
-// ---- the program (chazelle-dobkin-n5) ----
+// ---- the programs (chazelle-dobkin and chazelle-dobkin-n5) ----
 
 // Runs `name` on p, expects a valid result, returns its piece count.
 std::size_t valid_pieces(const std::string& name, const Polygon& p, const std::string& where) {
@@ -212,7 +215,7 @@ std::size_t valid_pieces(const std::string& name, const Polygon& p, const std::s
 }
 
 const std::vector<std::string>& programs() {
-  static const std::vector<std::string> names{"chazelle-dobkin-n5"};
+  static const std::vector<std::string> names{"chazelle-dobkin", "chazelle-dobkin-n5"};
   return names;
 }
 
@@ -355,6 +358,90 @@ TEST(ChazelleDobkin, ResolvesFacingPairsWithOneSegmentEach) {
     for (const std::string& name : programs())
       EXPECT_EQ(valid_pieces(name, p, "facing pairs m=" + std::to_string(m)), static_cast<std::size_t>(m + 1)) << name;
   }
+}
+
+// ---- chazelle-dobkin's X4 tables (Sec. 2.4) against chazelle-dobkin-n5's search of every pair ----
+
+Polygon rotated(const Polygon& p, std::size_t by) {
+  std::vector<Point> ring(p.vertices());
+  std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(by), ring.end());
+  return Polygon::make(ring);
+}
+
+// Both programs valid and with the same piece count; returns it.
+std::size_t same_count(const Polygon& p, const std::string& where) {
+  const std::size_t tables = valid_pieces("chazelle-dobkin", p, where);
+  EXPECT_EQ(tables, valid_pieces("chazelle-dobkin-n5", p, where)) << where;
+  return tables;
+}
+
+TEST(ChazelleDobkinTables, SameCountAsEveryPairOnEveryFamily) {
+  std::size_t compared = 0;
+  for (const Family& f : families())
+    for (std::size_t r : {1, 3, 5, 8, 12, 16, 24})
+      for (std::size_t n : {r + 5, 2 * r + 6, 3 * r + 9, 4 * r + 12}) {
+        if (f.infeasible(n, r)) continue;
+        for (std::uint64_t seed : {1, 2, 3}) {
+          same_count(Polygon::make(generate(f.name, n, r, seed)), label({f.name, n, r, seed}));
+          ++compared;
+        }
+      }
+  EXPECT_GT(compared, 150u);
+}
+
+// One X4-pattern per gadget: 3m + 1 pieces (r = 4m notches, naive r + 1, diagonals 4m + 1).
+TEST(ChazelleDobkinTables, FindsTheX4PatternOfEachSlitGadget) {
+  for (int m : {1, 2, 3}) {
+    const Polygon p = gadgets::four_slit_gadgets(m);
+    const std::string where = "slit gadgets m=" + std::to_string(m);
+    ASSERT_EQ(p.reflex_count(), static_cast<std::size_t>(4 * m));
+    EXPECT_EQ(same_count(p, where), static_cast<std::size_t>(3 * m + 1)) << where;
+    Counters counters;
+    find_algorithm("chazelle-dobkin")->run(p, counters);
+    EXPECT_GE(counters["x4_chosen"], m) << where;
+    EXPECT_EQ(counters["patterns"], m) << where;
+  }
+}
+
+TEST(ChazelleDobkinTables, SameCountOnEveryRotation) {
+  for (int m : {1, 2}) {
+    const Polygon p = gadgets::four_slit_gadgets(m);
+    for (std::size_t k = 0; k < p.size(); ++k)
+      EXPECT_EQ(same_count(rotated(p, k), "slit gadgets rotated"), static_cast<std::size_t>(3 * m + 1))
+          << "m=" << m << " rotated " << k;
+  }
+  for (const Sample& s : {Sample{"random", 14, 6, 3}, Sample{"notch-heavy", 12, 7, 2}, Sample{"x-pattern", 13, 3, 2}}) {
+    const Polygon p = make(s);
+    for (std::size_t k = 0; k < p.size(); ++k) same_count(rotated(p, k), label(s) + " rotated " + std::to_string(k));
+  }
+}
+
+// Every table witness is an entry, every entry an outer notch with a tip, and each tested at least one
+// candidate pair; STEP 3 looks up at most 2 (j - i - 1) entries per interval; an X4 chosen needs a witness;
+// the tables test at most 2 t^2 pairs, t the tips that exist.
+TEST(ChazelleDobkinTables, CountersAddUp) {
+  std::vector<Sample> samples = small_samples();
+  samples.push_back({"random", 60, 20, 1});
+  std::int64_t tested = 0;
+  for (const Sample& s : samples) {
+    const Polygon p = make(s);
+    const std::int64_t r = static_cast<std::int64_t>(p.reflex_count());
+    Counters counters;
+    find_algorithm("chazelle-dobkin")->run(p, counters);
+    EXPECT_LE(counters["x4_table_witnesses"], counters["x4_table_entries"]) << label(s);
+    EXPECT_LE(counters["x4_table_entries"], counters["x4_candidates"]) << label(s);
+    EXPECT_LE(counters["x4_candidates"], counters["x4_tests"]) << label(s);
+    EXPECT_LE(counters["x4_table_witnesses"], counters["x4_found"]) << label(s);
+    EXPECT_LE(counters["x4_scan_steps"], r * r * r / 3) << label(s);
+    EXPECT_LE(counters["x4_chosen"], counters["x4_table_witnesses"]) << label(s);
+    // Each table tests a pair of existing tips at most once (the header's O(r^3 + t^2)).
+    EXPECT_LE(counters["x4_candidates"], 2 * counters["tips_found"] * counters["tips_found"]) << label(s);
+    tested += counters["x4_candidates"];
+  }
+  EXPECT_GT(tested, 0);
+  Counters convex;
+  find_algorithm("chazelle-dobkin")->run(Polygon::make(generate("convex", 9, 0, 1)), convex);
+  EXPECT_EQ(convex["x4_candidates"] + convex["x4_scan_steps"] + convex["x4_table_entries"], 0);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"
+#include "tests/slit_gadgets.h"
 #include "tests/steiner_optimum_check.h"
 
 #include <gtest/gtest.h>
@@ -136,13 +137,7 @@ TEST(SteinerOptimumCheck, FindsASteinerPointThatIsASingleVertex) {
   EXPECT_EQ(checked(three_slits(1), "three slits missing each other").pieces, 4u);
 }
 
-// Four slits in a rectangle, the left two aimed at (-10, 0), the right two at (10, 0), each range about
-// 10 degrees wide: no diagonal and no single Steiner point resolves two of the tips together, but the
-// X4-pattern through both points resolves all four.
-Polygon four_slits() {
-  return polygon({{-40, -30}, {-21, -30}, {-16, -18}, {-19, -30}, {19, -30}, {16, -18}, {21, -30}, {40, -30},
-                  {40, 30}, {21, 30}, {16, 18}, {19, 30}, {-19, 30}, {-16, 18}, {-21, 30}, {-40, 30}});
-}
+Polygon four_slits() { return gadgets::four_slit_gadgets(1); }
 
 TEST(SteinerOptimumCheck, FindsAnX4PatternWithTwoSteinerPoints) {
   const steiner_check::Result result = checked(four_slits(), "four slits");
