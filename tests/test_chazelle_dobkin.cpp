@@ -7,7 +7,7 @@
 // pieces, the known optimum of the x-pattern family (2m + 1) and of facing pairs of notches (r/2 + 1),
 // and at least as many patterns as an exhaustive search over compatible X2- and X3-patterns. Last,
 // chazelle-dobkin's X4 tables against chazelle-dobkin-n5's search of every pair: the same count on
-// every family and on every rotation, the X4-patterns of side-by-side slit gadgets, and its counters.
+// every family and on every rotation, the X4-patterns of the x4-quads groups, and its counters.
 #include "algorithms/chazelle_dobkin_patterns.h"
 #include "algorithms/keil_snoeyink.h"
 #include "algorithms/naive.h"
@@ -15,7 +15,6 @@
 #include "core/validate.h"
 #include "generators/family.h"
 #include "tests/brute_force.h"
-#include "tests/slit_gadgets.h"
 
 #include <gtest/gtest.h>
 
@@ -389,11 +388,11 @@ TEST(ChazelleDobkinTables, SameCountAsEveryPairOnEveryFamily) {
   EXPECT_GT(compared, 150u);
 }
 
-// One X4-pattern per gadget: 3m + 1 pieces (r = 4m notches, naive r + 1, diagonals 4m + 1).
+// One X4-pattern per group of x4-quads (at its smallest n, no padding): 3m + 1 pieces (r = 4m notches, naive r + 1, diagonals 4m + 1).
 TEST(ChazelleDobkinTables, FindsTheX4PatternOfEachSlitGadget) {
   for (int m : {1, 2, 3}) {
-    const Polygon p = gadgets::four_slit_gadgets(m);
-    const std::string where = "slit gadgets m=" + std::to_string(m);
+    const Polygon p = Polygon::make(generate("x4-quads", 12 * m + 4, 4 * m, 1));
+    const std::string where = "x4-quads groups m=" + std::to_string(m);
     ASSERT_EQ(p.reflex_count(), static_cast<std::size_t>(4 * m));
     EXPECT_EQ(same_count(p, where), static_cast<std::size_t>(3 * m + 1)) << where;
     Counters counters;
@@ -405,9 +404,9 @@ TEST(ChazelleDobkinTables, FindsTheX4PatternOfEachSlitGadget) {
 
 TEST(ChazelleDobkinTables, SameCountOnEveryRotation) {
   for (int m : {1, 2}) {
-    const Polygon p = gadgets::four_slit_gadgets(m);
+    const Polygon p = Polygon::make(generate("x4-quads", 12 * m + 4, 4 * m, 1));
     for (std::size_t k = 0; k < p.size(); ++k)
-      EXPECT_EQ(same_count(rotated(p, k), "slit gadgets rotated"), static_cast<std::size_t>(3 * m + 1))
+      EXPECT_EQ(same_count(rotated(p, k), "x4-quads rotated"), static_cast<std::size_t>(3 * m + 1))
           << "m=" << m << " rotated " << k;
   }
   for (const Sample& s : {Sample{"random", 14, 6, 3}, Sample{"notch-heavy", 12, 7, 2}, Sample{"x-pattern", 13, 3, 2}}) {

@@ -8,7 +8,6 @@
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"
-#include "tests/slit_gadgets.h"
 #include "tests/steiner_optimum_check.h"
 
 #include <gtest/gtest.h>
@@ -137,7 +136,7 @@ TEST(SteinerOptimumCheck, FindsASteinerPointThatIsASingleVertex) {
   EXPECT_EQ(checked(three_slits(1), "three slits missing each other").pieces, 4u);
 }
 
-Polygon four_slits() { return gadgets::four_slit_gadgets(1); }
+Polygon four_slits() { return Polygon::make(generate("x4-quads", 16, 4, 1)); }
 
 TEST(SteinerOptimumCheck, FindsAnX4PatternWithTwoSteinerPoints) {
   const steiner_check::Result result = checked(four_slits(), "four slits");
