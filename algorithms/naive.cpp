@@ -137,10 +137,11 @@ QPoint meet(const QPoint& p0, const QPoint& p1, const Line& l) { return meet(p0,
 // Its coordinates have k bits more than u's, whatever w's.
 std::pair<Rational, Rational> dyadic_turn(const Rational& ux, const Rational& uy, const Rational& wx,
                                           const Rational& wy) {
-  const Rational u_cross_w = ux * wy - uy * wx;      // > 0
-  const Rational perp_cross_w = -uy * wy - ux * wx;  // rot90(u) x w
+  // (2^k u + rot90(u)) x w = 2^k (u x w) + rot90(u) x w, with u x w > 0: double until positive.
+  Rational scaled_u_cross_w = ux * wy - uy * wx;
+  const Rational minus_perp_cross_w = uy * wy + ux * wx;
   Rational scale = 1;
-  while (scale * u_cross_w + perp_cross_w <= 0) scale *= 2;
+  while (scaled_u_cross_w <= minus_perp_cross_w) scaled_u_cross_w *= 2, scale *= 2;
   return {scale * ux - uy, scale * uy + ux};
 }
 
