@@ -17,12 +17,25 @@
 //   ... if c is not t, the segment v c must pass through a notch of P". Here the ray is turned by an
 //   infinitesimal angle counter-clockwise, into the range, which decides which edge xy it meets (the
 //   one it crosses next to x) and also makes it pass by vertices it would touch without crossing G.
-//   The segment then ends at the midpoint of x (or, after passed vertices, the extension's crossing
-//   point) and c, where t bounds the turn by the range's other side (the extension of edge (v, next(v))
+//   The segment then ends strictly between x (or, after passed vertices, the extension's crossing point
+//   h) and c, where t bounds the turn by the range's other side (the extension of edge (v, next(v))
 //   beyond v) and c by the unresolved notches inside triangle (v, x, t): the open triangle with the
 //   smallest such angle holds no vertex of G, so nothing crosses the segment, and its nearest-angle
 //   blocker is always a notch still reflex in its face, which is why testing the unresolved notches,
 //   O(r) per repair, is enough.
+// - Where in (h, c) the turned segment ends is our choice (the thesis needs only some point there): the
+//   extension's direction u = v - prev(v) turned by atan(2^-k) counter-clockwise, i.e. direction
+//   2^k u + rot90(u), for the least k >= 0 that stays short of c. So every segment lies on a line
+//   through its notch whose direction is given by two input points and k, and every Steiner point is
+//   the meeting point of two such lines (or of one and a polygon edge): its bit length is bounded by the
+//   input's and the k's, whatever chain of earlier segments it was found through. An earlier version
+//   ended at the midpoint of h and c; on a comb (r = n/2) each repair then ends on the left edge halfway
+//   between the extension and the previous repair's end, a chain of r/2 halvings: the Steiner points
+//   reached n/4 bits, the interval filters failed on the points nearing the gap bottoms' line, and the
+//   time grew as n^2.44 while the operation counts grew as n r. k is about log2 of 1 / the angle
+//   between the extension and v c, a property of the geometry at the notch, not of the number of
+//   segments before (comb: k <= 13 up to n = 10000, the teeth's height over the comb's width); the
+//   comb's Steiner points now have under 30 bits at n = 5000 (up to 1270 before).
 // - Theorem 2's walk takes, at each vertex, the neighbour just before the one it came from in
 //   counter-clockwise order; with three neighbours two of them can make non-reflex angles, so "the
 //   unique neighbour making a non-reflex angle" of the OCR'd text is read as "the first one".
@@ -112,8 +125,24 @@ QPoint meet(const QPoint& p0, const QPoint& p1, const QPoint& q0, const QPoint& 
   return QPoint(p0.x() + t * dx, p0.y() + t * dy);
 }
 
-QPoint midpoint(const QPoint& p, const QPoint& q) {
-  return QPoint((p.x() + q.x()) / 2, (p.y() + q.y()) / 2);
+// A line of G, spanned by two exact points.
+struct Line {
+  QPoint p, q;
+};
+
+QPoint meet(const QPoint& p0, const QPoint& p1, const Line& l) { return meet(p0, p1, l.p, l.q); }
+
+// The direction 2^k u + rot90(u) for the least k >= 0 that puts it strictly between u and w, which
+// is strictly counter-clockwise of u by less than a half turn: u turned by atan(2^-k) towards w.
+// Its coordinates have k bits more than u's, whatever w's.
+std::pair<Rational, Rational> dyadic_turn(const Rational& ux, const Rational& uy, const Rational& wx,
+                                          const Rational& wy) {
+  // (2^k u + rot90(u)) x w = 2^k (u x w) + rot90(u) x w, with u x w > 0: double until positive.
+  Rational scaled_u_cross_w = ux * wy - uy * wx;
+  const Rational minus_perp_cross_w = uy * wy + ux * wx;
+  Rational scale = 1;
+  while (scaled_u_cross_w <= minus_perp_cross_w) scaled_u_cross_w *= 2, scale *= 2;
+  return {scale * ux - uy, scale * uy + ux};
 }
 
 }  // namespace
@@ -135,7 +164,7 @@ class Decomposer {
     for (VertexId v : notches) unresolved_[v] = 1;
     for (const SteinerPoint& s : d_.steiner) steiner_.emplace_back(s.point);
     place_boundary_steiner_points();
-    for (const Cut& c : d_.cuts) segments_.push_back({c.a, c.b, c.a, c.b, {}});
+    for (const Cut& c : d_.cuts) segments_.push_back({c.a, c.b, {at(c.a).exact(), at(c.b).exact()}, {}});
     d_.cuts.clear();
   }
 
@@ -175,7 +204,7 @@ class Decomposer {
  private:
   struct Segment {
     VertexId from, to;          // from: the notch (or a given cut's first end)
-    VertexId carrier0, carrier1;  // two points spanning its line, input vertices where possible
+    Line carrier;  // its line, spanned by input vertices or by its notch and a dyadic turn (turned_line)
     std::vector<VertexId> inner;
   };
 
@@ -192,9 +221,9 @@ class Decomposer {
     if (l.segment) return {segments_[l.index].from, segments_[l.index].to};
     return {l.index, static_cast<VertexId>(p_.next(l.index))};
   }
-  std::pair<VertexId, VertexId> carrier(LineRef l) const {
-    if (l.segment) return {segments_[l.index].carrier0, segments_[l.index].carrier1};
-    return ends(l);
+  Line carrier(LineRef l) const {
+    if (l.segment) return segments_[l.index].carrier;
+    return {at(l.index).exact(), at(static_cast<VertexId>(p_.next(l.index))).exact()};
   }
   std::vector<VertexId>& inner(LineRef l) {
     return l.segment ? segments_[l.index].inner : inner_of_edge_[l.index];
@@ -237,8 +266,7 @@ class Decomposer {
 
   XPoint crossing_point(LineRef line, VertexId right) const {
     if (turn(at(a_), at(v_), at(right)) == 0) return XPoint(at(right).exact());
-    const auto [c0, c1] = carrier(line);
-    return XPoint(meet(at(a_).exact(), at(v_).exact(), at(c0).exact(), at(c1).exact()));
+    return XPoint(meet(at(a_).exact(), at(v_).exact(), carrier(line)));
   }
 
   void shoot(VertexId v, BoundarySearch& search) {
@@ -292,22 +320,23 @@ class Decomposer {
     auto vertex = [&](std::size_t k) { return k == 0 ? e0 : k <= in.size() ? in[k - 1] : e1; };
     const VertexId left_end = hit.left == e1 ? vertex(lo + 1) : vertex(lo);
     const bool must_turn = at_vertex || (ahead_ && dot_sign(at(*ahead_), hit.point, at(a_), at(v_)) >= 0);
-    const QPoint end = must_turn ? turned_end(hit.point, left_end) : hit.point.exact;
+    const Line hit_line = carrier(hit.line);
+    const Line line = must_turn ? turned_line(hit.point, left_end, hit_line) : Line{at(a_).exact(), at(v_).exact()};
+    const QPoint end = must_turn ? meet(line.p, line.q, hit_line) : hit.point.exact;
     const VertexId s = static_cast<VertexId>(n_ + d_.add_steiner(end, hit.line.segment ? kInterior : hit.line.index));
     steiner_.emplace_back(end);
     in.insert(in.begin() + lo, s);
-    segments_.push_back({v_, s, must_turn ? v_ : a_, must_turn ? s : v_, {}});
+    segments_.push_back({v_, s, line, {}});
   }
 
-  // Figure 2.5-b: the end of a segment turned counter-clockwise from the extension, which meets the
-  // line at h, towards the sub-edge's end q left of the ray. t bounds the turn by the range, c by the
-  // unresolved notch inside triangle (v, h, t) with the smallest angle from the extension.
-  QPoint turned_end(const XPoint& h, VertexId q) {
+  // Figure 2.5-b: the line of a segment turned counter-clockwise from the extension, which meets the
+  // hit line at h, towards the sub-edge's end q left of the ray. t bounds the turn by the range, c by
+  // the unresolved notch inside triangle (v, h, t) with the smallest angle from the extension; the
+  // segment turns by the largest angle atan(2^-k), k >= 0, short of c (dyadic_turn).
+  Line turned_line(const XPoint& h, VertexId q, const Line& hit_line) {
     ++repairs_;
-    const QPoint t_exact = turn(at(b_), at(v_), at(q)) <= 0
-                               ? at(q).exact()
-                               : meet(at(b_).exact(), at(v_).exact(), h.exact, at(q).exact());
-    const XPoint t(t_exact);
+    const QPoint v = at(v_).exact(), a = at(a_).exact();
+    const XPoint t(turn(at(b_), at(v_), at(q)) <= 0 ? at(q).exact() : meet(at(b_).exact(), v, hit_line));
     std::optional<VertexId> blocker;
     for (VertexId w : pending_) {
       if (!unresolved_[w] || w == v_) continue;
@@ -316,8 +345,9 @@ class Decomposer {
           (!blocker || turn(at(v_), at(w), at(*blocker)) > 0))
         blocker = w;
     }
-    const QPoint c = blocker ? meet(at(v_).exact(), at(*blocker).exact(), h.exact, t.exact) : t.exact;
-    return midpoint(h.exact, c);
+    const QPoint c = blocker ? meet(v, at(*blocker).exact(), hit_line) : t.exact;
+    const auto [dx, dy] = dyadic_turn(v.x() - a.x(), v.y() - a.y(), c.x() - v.x(), c.y() - v.y());
+    return {v, QPoint(v.x() + dx, v.y() + dy)};
   }
 
   const Polygon& p_;

@@ -12,8 +12,9 @@
 // range, chosen over the thesis's bisector because it is given by two input points, so that every
 // test against the polygon's vertices is an exact predicate on doubles. When the extension's first
 // contact with G is a vertex, or passes through vertices before its first crossing, the segment is
-// turned into the range by the repair of Figure 2.5-b (see naive.cpp). Steiner points are exact
-// rationals.
+// turned into the range by the repair of Figure 2.5-b (see naive.cpp), by an angle atan(2^-k). Steiner
+// points are exact rationals, each where two lines given by input points (and such k) meet, so their
+// bit length does not grow along chains of segments ending on earlier segments.
 #pragma once
 
 #include "core/registry.h"

@@ -233,7 +233,8 @@ TEST(Naive, ExtensionEndsInsideTheEdgeItMeets) {
 TEST(Naive, ExtensionIntoAVertexIsTurnedIntoTheRange) {
   // From (5,5) the range is between south-west (the extension) and south-east; the ray turns towards
   // south-east, meets edge (0,0)-(10,0) next to (0,0); the range's other side meets that edge at
-  // t = (10,0), nothing is in triangle (v, (0,0), t), so the segment ends halfway, at (5,0).
+  // t = (10,0), nothing is in triangle (v, (0,0), t), so the segment turns by atan(1) = 45 degrees,
+  // short of t, and ends at (5,0).
   const Polygon p = Polygon::make(into_vertex());
   Counters counters;
   const Decomposition d = naive_decomposition(p, counters);
@@ -245,25 +246,47 @@ TEST(Naive, ExtensionIntoAVertexIsTurnedIntoTheRange) {
 
 TEST(Naive, ExtensionIntoASteinerPointEndsOnTheEarlierSegment) {
   // Notch (2,2) ends at (0,2); the extension of notch (1,3) runs into it and turns onto the segment
-  // (2,2)-(0,2), bounded by the range's side x = 1: it ends at (1/2, 2), splitting that segment.
+  // (2,2)-(0,2), bounded by the range's side x = 1: a turn by atan(1) would reach that side, by
+  // atan(1/2) (direction (-1,-3)) it does not, so it ends at (2/3, 2), splitting that segment.
   const Polygon p = Polygon::make(into_steiner_point());
   Counters counters;
   const Decomposition d = naive_decomposition(p, counters);
   ASSERT_EQ(d.steiner.size(), 2u);
-  EXPECT_EQ(d.steiner[1].point, QPoint(Rational(1, 2), 2));
+  EXPECT_EQ(d.steiner[1].point, QPoint(Rational(2, 3), 2));
   EXPECT_EQ(d.steiner[1].boundary_edge, kInterior);
   EXPECT_EQ(d.cuts.size(), 3u);
 }
 
 TEST(Naive, ExtensionOntoAnUnresolvedNotchPassesIt) {
   // The extension of (2,1) north runs into the notch (2,3), whose edge (2,3)-(2,4) continues it: the
-  // perturbed ray passes both, first crosses edge (2,4)-(0,4) at (2,4), and the segment ends at (1,4).
+  // perturbed ray passes both, first crosses edge (2,4)-(0,4) at (2,4); the turn is bounded by (0,4),
+  // which atan(1) would overshoot, so it turns by atan(1/2) (direction (-1,2)) and ends at (1/2,4).
   const Polygon p = Polygon::make(facing_notches());
   Counters counters;
   const Decomposition d = naive_decomposition(p, counters);
   ASSERT_EQ(d.steiner.size(), 4u);
-  EXPECT_EQ(d.steiner[0].point, QPoint(1, 4));
+  EXPECT_EQ(d.steiner[0].point, QPoint(Rational(1, 2), 4));
   EXPECT_EQ(d.steiner[0].boundary_edge, 10);
+}
+
+std::size_t bit_length(const Rational& v) {
+  return std::max(mpz_sizeinbase(v.get_num_mpz_t(), 2), mpz_sizeinbase(v.get_den_mpz_t(), 2));
+}
+
+// On a comb every other notch's extension runs along the gap bottoms and is turned; each turned
+// segment ends on the left edge just above the one before it, a chain of r / 2 repairs. Its Steiner
+// points keep a bounded bit length all the same (each segment lies on a line through its notch given
+// by input points and a dyadic turn): ending halfway between the bounds, as an earlier version did,
+// added a bit per repair, over 250 bits at n = 1000.
+TEST(Naive, SteinerPointsStaySmallAlongAChainOfRepairs) {
+  const Polygon p = Polygon::make(generate("comb", 1000, std::nullopt, 1));
+  Counters counters;
+  const Decomposition d = naive_decomposition(p, counters);
+  expect_naive_promises(p, d, "comb n=1000");
+  EXPECT_GE(counters["repairs"], 200);
+  std::size_t longest = 0;
+  for (const SteinerPoint& s : d.steiner) longest = std::max({longest, bit_length(s.point.x()), bit_length(s.point.y())});
+  EXPECT_LE(longest, 64u);
 }
 
 // The graph representation holds degrees 2 and 3 only: a decomposition with a busier vertex is not a
