@@ -149,13 +149,19 @@ class Trapezoidation {
     }
   }
 
-  // Step 3: the top-bottom diagonal of every inside trapezoid whose sides do not join them.
+  // Step 3: the top-bottom diagonal of every inside trapezoid whose sides do not join them, ordered by
+  // top vertex (the trapezoids were made in random order; triangulate_monotone_pieces files each
+  // diagonal under both its vertices, which in vertex order reads and writes its arrays with far fewer
+  // cache misses). The counting sort is O(n).
   std::vector<Cut> monotone_diagonals() const {
-    std::vector<Cut> diagonals;
-    for (const Cell& c : cells_) {
-      if (!c.is_leaf() || !inside(c.z) || joins(c.z.left, c.z) || joins(c.z.right, c.z)) continue;
-      diagonals.push_back({c.z.hi, c.z.lo});
-    }
+    std::vector<Cut> made;
+    for (const Cell& c : cells_)
+      if (is_diagonal(c)) made.push_back({c.z.hi, c.z.lo});
+    std::vector<std::uint32_t> first(std::size_t{n_} + 1, 0);
+    for (const Cut& d : made) ++first[d.a + 1];
+    for (std::uint32_t v = 0; v < n_; ++v) first[v + 1] += first[v];
+    std::vector<Cut> diagonals(made.size());
+    for (const Cut& d : made) diagonals[first[d.a]++] = d;
     return diagonals;
   }
 
@@ -185,6 +191,10 @@ class Trapezoidation {
   }
   // The polygon lies right of its downward edges (counter-clockwise order).
   bool inside(const Trapezoid& t) const { return t.left != kNone && (flags_[t.left] & kDescends); }
+  // Whether cell c is a trapezoid inside the polygon whose top and bottom vertices no side joins.
+  bool is_diagonal(const Cell& c) const {
+    return c.is_leaf() && inside(c.z) && !joins(c.z.left, c.z) && !joins(c.z.right, c.z);
+  }
   // Side s (edge s -> s+1) runs from the trapezoid's top vertex to its bottom vertex.
   bool joins(std::uint32_t s, const Trapezoid& t) const {
     return s != kNone && ((s == t.hi && next(s) == t.lo) || (s == t.lo && next(s) == t.hi));
