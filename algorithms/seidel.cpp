@@ -277,7 +277,7 @@ class Trapezoidation {
     }
   }
 
-  static constexpr std::uint32_t kLookahead = 8;
+  static constexpr std::uint32_t kLookahead = 6;  // measured best of 4, 6, 8, 12, 16, 24 at n = 10^6
   static constexpr std::uint32_t kWalkDone = kNone - 1;
 
   // A pending insertion's early work: where the search for its upper endpoint stands, and where the
