@@ -31,6 +31,19 @@
 // were moved a little along that edge. The classic code relocates every pending endpoint by a search
 // from its old leaf; this one walks the pending edges as the paper does. The random order comes from
 // the project's own generator with a fixed seed, so the output is the same on every machine.
+//
+// Memory (not in the paper; it changes no step, result or counter): the random order makes every
+// insertion read records at random addresses, and beyond the caches the time per operation grows with n.
+// Since the order is known in advance, the reads of the next kLookahead insertions are started early:
+// the edge's record is prefetched 2*kLookahead insertions ahead and its start cell kLookahead ahead, and
+// meanwhile each pending insertion's search for its upper endpoint is advanced one node per insertion,
+// prefetching the next node. This is exact, not a guess: a search node never changes (only a leaf
+// becomes a node), so the path walked early is the path the insertion would walk, and the insertion
+// resumes the search where it stands. Once the search stands on a leaf, the same budget of one step
+// per insertion walks read-only down along the edge (as tracing does), prefetching each trapezoid the
+// edge will cross, its neighbours and its bottom vertex; this only warms the cache (the insertion
+// re-reads everything). Each insertion is advanced at most kLookahead-1 times, so the extra work is
+// O(n) and the expected bound stays O(n log* n).
 #include "algorithms/monotone.h"
 
 #include <array>
@@ -129,19 +142,26 @@ class Trapezoidation {
     const std::vector<std::uint32_t> order = random_order();
     std::uint32_t done = 0;
     for (std::uint32_t end : phase_ends()) {
-      for (; done < end; ++done) insert(order[done]);
+      insert_phase(order, done, end);
+      done = end;
       if (done < n_) trace_pending();
       ++phases_;
     }
   }
 
-  // Step 3: the top-bottom diagonal of every inside trapezoid whose sides do not join them.
+  // Step 3: the top-bottom diagonal of every inside trapezoid whose sides do not join them, ordered by
+  // top vertex (the trapezoids were made in random order; triangulate_monotone_pieces files each
+  // diagonal under both its vertices, which in vertex order reads and writes its arrays with far fewer
+  // cache misses). The counting sort is O(n).
   std::vector<Cut> monotone_diagonals() const {
-    std::vector<Cut> diagonals;
-    for (const Cell& c : cells_) {
-      if (!c.is_leaf() || !inside(c.z) || joins(c.z.left, c.z) || joins(c.z.right, c.z)) continue;
-      diagonals.push_back({c.z.hi, c.z.lo});
-    }
+    std::vector<Cut> made;
+    for (const Cell& c : cells_)
+      if (is_diagonal(c)) made.push_back({c.z.hi, c.z.lo});
+    std::vector<std::uint32_t> first(std::size_t{n_} + 1, 0);
+    for (const Cut& d : made) ++first[d.a + 1];
+    for (std::uint32_t v = 0; v < n_; ++v) first[v + 1] += first[v];
+    std::vector<Cut> diagonals(made.size());
+    for (const Cut& d : made) diagonals[first[d.a]++] = d;
     return diagonals;
   }
 
@@ -171,6 +191,10 @@ class Trapezoidation {
   }
   // The polygon lies right of its downward edges (counter-clockwise order).
   bool inside(const Trapezoid& t) const { return t.left != kNone && (flags_[t.left] & kDescends); }
+  // Whether cell c is a trapezoid inside the polygon whose top and bottom vertices no side joins.
+  bool is_diagonal(const Cell& c) const {
+    return c.is_leaf() && inside(c.z) && !joins(c.z.left, c.z) && !joins(c.z.right, c.z);
+  }
   // Side s (edge s -> s+1) runs from the trapezoid's top vertex to its bottom vertex.
   bool joins(std::uint32_t s, const Trapezoid& t) const {
     return s != kNone && ((s == t.hi && next(s) == t.lo) || (s == t.lo && next(s) == t.hi));
@@ -220,28 +244,111 @@ class Trapezoidation {
     c.geo[3] = segs_[s].bottom.y();
   }
 
+  // The child of search node c on the side of point q moved a little towards point toward. q lies on
+  // a node's segment only as one of its endpoints.
+  static std::uint32_t child_toward(const Cell& c, const Point& q, const Point& toward) {
+    if (!c.is_segment_node()) {
+      const Point x(c.geo[0], c.geo[1]);
+      return above(x == q ? toward : q, x) ? c.first : c.second;
+    }
+    const Point top(c.geo[0], c.geo[1]), bottom(c.geo[2], c.geo[3]);
+    const Point& probe = (q == top || q == bottom) ? toward : q;
+    return orient(top, bottom, probe) > 0 ? c.right_child() : c.first;
+  }
+
   // The trapezoid holding point q moved a little towards point toward, searching from cell `from`.
-  // q lies on a node's segment only as one of its endpoints.
   std::uint32_t locate(const Point& q, const Point& toward, std::uint32_t from) {
     std::uint32_t cell = from;
-    for (;; ++search_steps_) {
-      const Cell& c = cells_[cell];
-      if (c.is_leaf()) return cell;
-      if (!c.is_segment_node()) {
-        const Point x(c.geo[0], c.geo[1]);
-        cell = above(x == q ? toward : q, x) ? c.first : c.second;
-      } else {
-        const Point top(c.geo[0], c.geo[1]), bottom(c.geo[2], c.geo[3]);
-        const Point& probe = (q == top || q == bottom) ? toward : q;
-        cell = orient(top, bottom, probe) > 0 ? c.right_child() : c.first;
-      }
+    for (; !cells_[cell].is_leaf(); ++search_steps_) cell = child_toward(cells_[cell], q, toward);
+    return cell;
+  }
+
+  // Inserts order[begin, end) with the lookahead of the header's "Memory" note: slot k % kLookahead
+  // holds the lookahead of insertion k.
+  void insert_phase(const std::vector<std::uint32_t>& order, std::uint32_t begin, std::uint32_t end) {
+    std::array<Lookahead, kLookahead> ahead;
+    for (std::uint32_t j = begin; j < end && j < begin + kLookahead; ++j) ahead[j % kLookahead] = look_ahead(order[j]);
+    for (std::uint32_t j = begin + kLookahead; j < end && j < begin + 2 * kLookahead; ++j) prefetch(segs_[order[j]]);
+    for (std::uint32_t k = begin; k < end; ++k) {
+      for (std::uint32_t j = k + 1; j < end && j < k + kLookahead; ++j) advance(ahead[j % kLookahead], order[j]);
+      insert(order[k], ahead[k % kLookahead].search);
+      if (k + kLookahead < end) ahead[k % kLookahead] = look_ahead(order[k + kLookahead]);
+      if (k + 2 * kLookahead < end) prefetch(segs_[order[k + 2 * kLookahead]]);
     }
   }
 
-  // One search per edge: for its upper endpoint. The lower endpoint is met while threading.
-  void insert(std::uint32_t s) {
+  static constexpr std::uint32_t kLookahead = 6;  // measured best of 4, 6, 8, 12, 16, 24 at n = 10^6
+  static constexpr std::uint32_t kWalkDone = kNone - 1;
+
+  // A pending insertion's early work: where the search for its upper endpoint stands, and where the
+  // read-only walk down along the edge stands (kNone before the search reaches a leaf, kWalkDone
+  // after the walk ends), with whether that trapezoid's surroundings have been prefetched.
+  struct Lookahead {
+    std::uint32_t search, walk;
+    bool surroundings_fetched;
+  };
+
+  Lookahead look_ahead(std::uint32_t s) {
+    const Lookahead a{start_of(s, upper(s)), kNone, false};
+    prefetch(cells_[a.search]);
+    return a;
+  }
+
+  // One step of edge s's lookahead: a search step, or a step of the walk down along s. Each step only
+  // reads records prefetched by the step before, and prefetches what the next one reads.
+  void advance(Lookahead& a, std::uint32_t s) {
+    const Cell& c = cells_[a.search];
+    if (!c.is_leaf()) {
+      a.search = child_toward(c, segs_[s].top, segs_[s].bottom);
+      a.walk = kNone;
+      ++search_steps_;
+      prefetch(cells_[a.search]);
+      return;
+    }
+    if (a.walk == kNone) a = {a.search, a.search, false};
+    // A trapezoid the walk reached may have been replaced since by an insertion before this one.
+    if (a.walk == kWalkDone || !cells_[a.walk].is_leaf()) {
+      a.walk = kWalkDone;
+    } else if (!a.surroundings_fetched) {
+      prefetch_surroundings(z(a.walk));
+      a.surroundings_fetched = true;
+    } else {
+      const std::uint32_t next = below_along(s, a.walk);
+      a.walk = next == kNone ? kWalkDone : next;
+      a.surroundings_fetched = false;
+      if (next != kNone) prefetch(cells_[next]);
+    }
+  }
+
+  // What inserting an edge through trapezoid t reads next: its bottom vertex and its neighbours.
+  void prefetch_surroundings(const Trapezoid& t) const {
+    if (t.lo != kNone) prefetch(p_[t.lo]);
+    for (std::uint32_t x : t.up)
+      if (x != kNone) prefetch(cells_[x]);
+    for (std::uint32_t x : t.down)
+      if (x != kNone) prefetch(cells_[x]);
+  }
+
+  // The trapezoid below t that edge s (not yet inserted, crossing t) enters, or kNone if s ends in t.
+  std::uint32_t below_along(std::uint32_t s, std::uint32_t t) const {
+    const Trapezoid& z = cells_[t].z;
+    const std::uint32_t b = z.lo;
+    if (b == kNone || !above(at(b), segs_[s].bottom)) return kNone;
+    return has_two(z.down) ? z.down[right_of(s, b) ? 0 : 1] : z.down[0];
+  }
+
+  // Starts the reads of a record (at most 48 bytes, so at most two cache lines) without waiting.
+  template <class T>
+  static void prefetch(const T& record) {
+    __builtin_prefetch(&record);
+    __builtin_prefetch(reinterpret_cast<const char*>(&record) + sizeof(T) - 1);
+  }
+
+  // One search per edge, for its upper endpoint, from `from` (a cell on its search path from the
+  // edge's start). The lower endpoint is met while threading.
+  void insert(std::uint32_t s, std::uint32_t from) {
     const std::uint32_t u = upper(s);
-    const std::uint32_t t = locate(segs_[s].top, segs_[s].bottom, start_of(s, u));
+    const std::uint32_t t = locate(segs_[s].top, segs_[s].bottom, from);
     Crossed first{z(t), t, t};
     if (!has_point(u)) first = cut_keeping_above(first, u, segs_[s].top);
     thread(s, first);
@@ -417,8 +524,7 @@ class Trapezoidation {
   std::uint32_t walk(std::uint32_t s, std::uint32_t t) {
     const Segment& e = segs_[s];
     if (s == e.upper) {
-      for (std::uint32_t b; (b = z(t).lo) != kNone && above(at(b), e.bottom); ++trace_steps_)
-        t = has_two(z(t).down) ? z(t).down[right_of(s, b) ? 0 : 1] : z(t).down[0];
+      for (std::uint32_t below; (below = below_along(s, t)) != kNone; ++trace_steps_) t = below;
     } else {
       for (std::uint32_t b; (b = z(t).hi) != kNone && above(e.top, at(b)); ++trace_steps_)
         t = has_two(z(t).up) ? z(t).up[right_of(s, b) ? 0 : 1] : z(t).up[0];
