@@ -39,10 +39,11 @@ fuzz: deps
 	@$(MAKE) --no-print-directory sanitize-build
 	@cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -R '^fuzz-'
 
-# A sweep resumes after the keys its journal (results/SWEEP.journal.jsonl) already holds; delete the
-# journal to measure everything again.
+# A sweep resumes after the keys its journal (DIR/SWEEP.journal.jsonl) already holds; delete the
+# journal to measure everything again. `bench` writes into results/quick/, so that it never overwrites
+# the committed reference run (results/paper.*, bounds.md, plots/).
 bench: build
-	@$(PY) analysis/sweep.py --sweep quick --build $(BUILD) --results results
+	@$(PY) analysis/sweep.py --sweep quick --build $(BUILD) --results results/quick
 
 paper: build
 	@$(PY) analysis/sweep.py --sweep paper --build $(BUILD) --results results
