@@ -39,11 +39,13 @@
 // meanwhile each pending insertion's search for its upper endpoint is advanced one node per insertion,
 // prefetching the next node. This is exact, not a guess: a search node never changes (only a leaf
 // becomes a node), so the path walked early is the path the insertion would walk, and the insertion
-// resumes the search where it stands. Once the search stands on a leaf, the same budget of one step
-// per insertion walks read-only down along the edge (as tracing does), prefetching each trapezoid the
-// edge will cross, its neighbours and its bottom vertex; this only warms the cache (the insertion
-// re-reads everything). Each insertion is advanced at most kLookahead-1 times, so the extra work is
-// O(n) and the expected bound stays O(n log* n).
+// resumes the search where it stands. Once the search stands on a leaf, the same budget of one step per
+// insertion walks read-only down along the edge (as tracing does), prefetching each trapezoid the edge
+// will cross, its neighbours and its bottom vertex; this only warms the cache (the insertion re-reads
+// everything). Each insertion is advanced at most kLookahead-1 times, so the extra work is O(n) and the
+// expected bound stays O(n log* n). Tracing (step 2) interleaves kTracers runs of pending edges, one
+// step of each in turn, so that their cache misses overlap; each run takes the steps it would take
+// alone, since tracing only reads the decomposition.
 #include "algorithms/monotone.h"
 
 #include <array>
@@ -130,8 +132,9 @@ class Trapezoidation {
       segs_[s] = down ? Segment{p_[s], p_[t], s, t, {0, 0}} : Segment{p_[t], p_[s], t, s, {0, 0}};
       if (down) flags_[s] = kDescends;
     }
-    // About 5n trapezoids are made; growing would copy them.
-    const std::size_t capacity = 6 * std::size_t{n_} + 16;
+    // Between 4n and 6.5n cells are made on the families measured; growing would copy them all, and
+    // capacity never used costs no memory (its pages are never touched).
+    const std::size_t capacity = 8 * std::size_t{n_} + 16;
     if (capacity >= kSegmentNode) throw std::length_error("seidel: too many vertices for 31-bit cell ids");
     cells_.reserve(capacity);
     allocate({kNone, kNone, kNone, kNone, {kNone, kNone}, {kNone, kNone}});  // the plane; cell 0 is the root
@@ -500,17 +503,42 @@ class Trapezoidation {
   // Step 2: each maximal run of edges not yet inserted starts at a vertex of an inserted edge. One
   // search (from the run's old trapezoid) finds where the run starts; walking along each edge of the
   // run finds where it ends, which is where the next one starts (its shared vertex is no point of the
-  // decomposition yet).
+  // decomposition yet). A run only reads the decomposition and writes its own edges' starts, so
+  // kTracers runs are traced at once, one step each in turn, and their cache misses overlap (header,
+  // "Memory"). Every run takes the same steps as it would alone.
   void trace_pending() {
-    for (std::uint32_t v = 0; v < n_; ++v) {
-      if (inserted(v) || !inserted(v == 0 ? n_ - 1 : v - 1)) continue;
-      std::uint32_t t = locate(at(v), at(next(v)), run_search_start(v));
-      for (std::uint32_t s = v; !inserted(s); s = next(s)) {
-        start_of(s, s) = t;
-        t = walk(s, t);
-        start_of(s, next(s)) = t;
+    std::array<Tracer, kTracers> tracers;
+    std::uint32_t next_vertex = 0, busy = 0;
+    for (Tracer& t : tracers) busy += start_run(t, next_vertex);
+    while (busy > 0)
+      for (Tracer& t : tracers) {
+        if (t.edge == kNone || trace_step(t)) continue;
+        if (!start_run(t, next_vertex)) --busy;
       }
+  }
+
+  static constexpr std::uint32_t kTracers = 8;
+
+  // A run being traced: the edge it stands on (kNone when idle), the cell (a search node while it
+  // searches for the run's start, then the trapezoid holding the walk), and whether the vertex the
+  // next walking step compares with has been prefetched.
+  struct Tracer {
+    std::uint32_t edge = kNone, cell = 0;
+    bool searching = false, vertex_fetched = false;
+  };
+
+  // Starts t on the first run at or after vertex `from`; false (t idle) if there is none.
+  bool start_run(Tracer& t, std::uint32_t& from) {
+    for (; from < n_; ++from) {
+      const std::uint32_t v = from;
+      if (inserted(v) || !inserted(v == 0 ? n_ - 1 : v - 1)) continue;
+      ++from;
+      t = {v, run_search_start(v), true, false};
+      prefetch(cells_[t.cell]);
+      return true;
     }
+    t.edge = kNone;
+    return false;
   }
 
   // Where to search for the start of a run at vertex v: v's own point node if v became a point in
@@ -520,16 +548,50 @@ class Trapezoidation {
     return point_phase_[v] == phases_ + 1 ? point_node_[v] : start_of(v, v);
   }
 
-  // From trapezoid t holding the start of edge s (at vertex s), the trapezoid holding its end.
-  std::uint32_t walk(std::uint32_t s, std::uint32_t t) {
-    const Segment& e = segs_[s];
-    if (s == e.upper) {
-      for (std::uint32_t below; (below = below_along(s, t)) != kNone; ++trace_steps_) t = below;
-    } else {
-      for (std::uint32_t b; (b = z(t).hi) != kNone && above(e.top, at(b)); ++trace_steps_)
-        t = has_two(z(t).up) ? z(t).up[right_of(s, b) ? 0 : 1] : z(t).up[0];
+  // One step of t: a search step; or reading its trapezoid and prefetching the vertex to compare
+  // with; or moving on along its edge. False when the run is done.
+  bool trace_step(Tracer& t) {
+    const std::uint32_t s = t.edge;
+    if (t.searching) {
+      const Cell& c = cells_[t.cell];
+      if (!c.is_leaf()) {
+        t.cell = child_toward(c, at(s), at(next(s)));
+        ++search_steps_;
+        prefetch(cells_[t.cell]);
+        return true;
+      }
+      t.searching = false;
+      start_of(s, s) = t.cell;
     }
-    return t;
+    if (!t.vertex_fetched) {
+      const Trapezoid& here = z(t.cell);
+      const std::uint32_t b = s == upper(s) ? here.lo : here.hi;
+      if (b != kNone) prefetch(at(b));
+      t.vertex_fetched = true;
+      return true;
+    }
+    t.vertex_fetched = false;
+    const std::uint32_t after = step_along(s, t.cell);
+    if (after != kNone) {
+      t.cell = after;
+      ++trace_steps_;
+      prefetch(cells_[after]);
+      return true;
+    }
+    start_of(s, next(s)) = t.cell;
+    t.edge = next(s);
+    if (inserted(t.edge)) return false;
+    start_of(t.edge, t.edge) = t.cell;
+    return true;
+  }
+
+  // The trapezoid after t along edge s walked from vertex s to vertex s+1, or kNone if s+1 lies in t.
+  std::uint32_t step_along(std::uint32_t s, std::uint32_t t) const {
+    if (s == upper(s)) return below_along(s, t);
+    const Trapezoid& z = cells_[t].z;
+    const std::uint32_t b = z.hi;
+    if (b == kNone || !above(segs_[s].top, at(b))) return kNone;
+    return has_two(z.up) ? z.up[right_of(s, b) ? 0 : 1] : z.up[0];
   }
 
   const Polygon& p_;
