@@ -415,9 +415,10 @@ TEST(ChazelleDobkinTables, SameCountOnEveryRotation) {
   }
 }
 
-// Every table witness is an entry, every entry an outer notch with a tip, and each tested at least one
-// candidate pair; STEP 3 looks up at most 2 (j - i - 1) entries per interval; an X4 chosen needs a witness;
-// the tables test at most 2 t^2 pairs, t the tips that exist.
+// Every table witness is an entry and passed one P4 test, every entry a position of a list; the scan
+// visits O(r) list positions per interval and ray choice besides its P4 tests; STEP 3 looks up at
+// most 2 (j - i - 1) entries per interval; an X4 chosen needs a witness; at most one loose point per
+// pair of rays of distinct notches.
 TEST(ChazelleDobkinTables, CountersAddUp) {
   std::vector<Sample> samples = small_samples();
   samples.push_back({"random", 60, 20, 1});
@@ -428,19 +429,19 @@ TEST(ChazelleDobkinTables, CountersAddUp) {
     Counters counters;
     find_algorithm("chazelle-dobkin")->run(p, counters);
     EXPECT_LE(counters["x4_table_witnesses"], counters["x4_table_entries"]) << label(s);
-    EXPECT_LE(counters["x4_table_entries"], counters["x4_candidates"]) << label(s);
-    EXPECT_LE(counters["x4_candidates"], counters["x4_tests"]) << label(s);
-    EXPECT_LE(counters["x4_table_witnesses"], counters["x4_found"]) << label(s);
-    EXPECT_LE(counters["x4_scan_steps"], r * r * r / 3) << label(s);
+    EXPECT_LE(counters["x4_table_witnesses"], counters["x4_p4_tests"]) << label(s);
+    EXPECT_LE(counters["x4_table_entries"], counters["x4_scan_steps"]) << label(s);
+    EXPECT_LE(counters["x4_p4_tests"], counters["x4_scan_steps"]) << label(s);
+    EXPECT_LE(counters["x4_scan_steps"] - counters["x4_p4_tests"], 12 * r * r * r) << label(s);
+    EXPECT_LE(counters["x4_lookup_steps"], r * r * r / 3) << label(s);
     EXPECT_LE(counters["x4_chosen"], counters["x4_table_witnesses"]) << label(s);
-    // Each table tests a pair of existing tips at most once (the header's O(r^3 + t^2)).
-    EXPECT_LE(counters["x4_candidates"], 2 * counters["tips_found"] * counters["tips_found"]) << label(s);
-    tested += counters["x4_candidates"];
+    EXPECT_LE(counters["x4_loose_points"], 2 * r * (r - 1)) << label(s);
+    tested += counters["x4_p4_tests"];
   }
   EXPECT_GT(tested, 0);
   Counters convex;
   find_algorithm("chazelle-dobkin")->run(Polygon::make(generate("convex", 9, 0, 1)), convex);
-  EXPECT_EQ(convex["x4_candidates"] + convex["x4_scan_steps"] + convex["x4_table_entries"], 0);
+  EXPECT_EQ(convex["x4_scan_steps"] + convex["x4_lookup_steps"] + convex["x4_table_entries"] + convex["x4_loose_points"], 0);
 }
 
 }  // namespace
