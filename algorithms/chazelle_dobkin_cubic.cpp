@@ -1,77 +1,98 @@
 // chazelle-dobkin: optimal convex decomposition with Steiner points, Algorithm CD with Section 2.4's
 // organisation of STEP 3's X4 term (B. Chazelle, Computational Geometry and Convexity, thesis, Yale
 // 1980 (000), Sec. 2.4, "An OCD Algorithm Cubic in the Number of Notches": Definition 2.4, Theorem 18,
-// Lemma 9, the sets E(i, j) of Sec. 2.4.2). The dynamic program (STEPs 1-5), its orientation and its
-// reconstructions are in algorithms/chazelle_dobkin.h; pattern detection, including the X4 test used
-// here, in algorithms/chazelle_dobkin_patterns.h.
+// Lemma 9, the sorted lists of points A_ik on the segments r_i, the sets E(i, j) and the selection and
+// two-way scans of Sec. 2.4.2). The dynamic program (STEPs 1-5), its orientation and its
+// reconstructions are in algorithms/chazelle_dobkin.h; pattern detection for the Y-patterns in
+// algorithms/chazelle_dobkin_patterns.h.
 //
-// What the thesis says (Sec. 2.4.1-2.4.2, as far as the OCR text goes). STEP 3 must not try the
-// O(r^2) pairs of inner notches of every interval. E(i, j) is computed right after S(i, j) and holds,
-// for each notch v_k outside V(i, j), "a single piece of data": whether some v_l inside can be patched
-// with v_i, v_j and v_k into an X4-pattern, keeping only the v_l that "cause the same savings in
-// V(i, j), that is, |S(i, j)|", so that STEP 3 decides the X4 term of an interval in O(r) lookups. The
-// text stops while describing the scan that fills E(i, j) in O(r).
+// What the thesis says (Sec. 2.4.1-2.4.2, as far as the OCR text goes). Every X4-pattern that does not
+// reduce to a Y-pattern reduces to a loose one (Theorem 18, Definition 2.4: each notch edge lined up
+// with the extension of one of the notch's two edges, 16 configurations), so its Steiner points are
+// among the points A_ik = r_i ∩ r_k, which STEP 1 sorts along each r_i. E(i, j) is computed right after
+// S(i, j) and holds, per outer notch, "a single piece of data": whether an inner notch completes an
+// X4-pattern that saves |S(i, j)| inside, found by selecting candidates on the two lists (the angle
+// conditions 3 and 4 of Fig. 2.32, and tightness) and "2-way scans" of them, O(r) per interval. The
+// text stops in the middle of the scan; Theorem 18's proof is the lost Figure 2.31.
 //
 // Reconstructed here, with proofs (S is the table of Algorithm CD; S(a, b) = 0 when a >= b).
-// (1) Only tight X4-patterns matter. S is monotone (S(a, b) >= S(a, b - 1), STEP 3's split at b - 1)
-//     and superadditive over disjoint intervals (S(a, c) >= S(a, b) + S(b + 1, c), the split at b).
-//     An X4-pattern on notches i < k < l < j counts c(k, l) = S(i+1, k-1) + S(k+1, l-1) + S(l+1, j-1) + 1,
-//     and S(i+1, k-1) + S(k+1, l-1) <= S(i+1, l-1) (superadditive, then monotone), so
-//     c(k, l) <= S(i+1, j-1) + 1. STEP 3's split term already reaches S(i, i) + S(i+1, j) >= S(i+1, j-1):
-//     the X4 term changes S(i, j) only if some X4-pattern reaches exactly S(i+1, j-1) + 1.
-// (2) Tightness factors. With a = S(i+1, k-1), b = S(k+1, l-1), c = S(l+1, j-1):
-//     a + b + c <= a + S(k+1, j-1) <= S(i+1, j-1), so a + b + c = S(i+1, j-1) iff
-//       T(i, j; k): S(i+1, k-1) + S(k+1, j-1) = S(i+1, j-1)  and
-//       T(k, j; l): S(k+1, l-1) + S(l+1, j-1) = S(k+1, j-1),
-//     and, splitting at l first (a + b <= S(i+1, l-1)), iff T(i, j; l) and T(i, l; k).
-// (3) The two pairings (Figure 2.24-a, -b) give two tables.
-//     E(k, j)[i], for i < k < j: some l in (k, j) with T(k, j; l) and an X4-pattern whose first Steiner
-//       point joins z_i and z_k and whose second joins z_l and z_j. It needs S only strictly inside
-//       V(k, j), so it is computed when the program reaches the interval (k, j) (the thesis's "E(i, j)
-//       computed after S(i, j)"), for every outer notch i at once.
-//     W(i, l)[j], for i < l < j: some k in (i, l) with T(i, l; k) and an X4-pattern whose first Steiner
-//       point joins z_k and z_l and whose second joins z_j and z_i; computed at the interval (i, l).
-//     STEP 3 on (i, j), when S(i+1, j-1) + 1 beats the other terms: the X4 term is S(i+1, j-1) + 1 iff
-//     some k in (i, j) has T(i, j; k) and a witness in E(k, j)[i], or some l in (i, j) has T(i, j; l)
-//     and a witness in W(i, l)[j] (by (1) and (2)); O(r) lookups per interval, O(r^3) in all. The
-//     witness names the other inner notch, and the Steiner points are recomputed from it for the layout.
-//     Every table entry an interval reads belongs to a shorter interval, so it is final.
-//     Consequence, proven by induction over the intervals: S (and therefore B, F and the piece count)
-//     is the same table as chazelle-dobkin-n5's, which takes the maximum of c(k, l) over all pairs
-//     with the same X4 test; only the X4-pattern laid out may differ.
+// (1) Only tight X4-patterns matter. S is monotone and superadditive, so an X4-pattern on notches
+//     i < k < l < j counts at most S(i+1, j-1) + 1, which it reaches iff T(i, j; k) and T(k, j; l), or
+//     iff T(i, j; l) and T(i, l; k), where T(a, b; m): S(a+1, m-1) + S(m+1, b-1) = S(a+1, b-1).
+// (2) Two pairings (Figure 2.24-a, -b), two tables, both filled when the program reaches the interval
+//     (g, h) between the two notches whose rays carry the Steiner points:
+//     E(k, j)[i]: a tight l in (k, j) and an X4 whose first Steiner point X joins z_i, z_k and whose
+//       second Y joins z_l, z_j;  W(i, l)[j]: a tight k in (i, l) and an X4 whose first Steiner point
+//       joins z_k, z_l and whose second joins z_j, z_i. Both are one shape: notches q, g, m, h in
+//       counter-clockwise cyclic order, q outside the interval (g, h) and m inside it, X joining z_q
+//       and z_g, Y joining z_m and z_h ((q, g, m, h) = (i, k, l, j) for E, (j, i, k, l) for W), so one
+//       row per interval (g, h), indexed by q, holds E(g, h) for q < g and W(g, h) for q > h, and one
+//       scan fills both. STEP 3 on (i, j) decides the X4 term from O(r) lookups (T(i, j; k) and
+//       E(k, j)[i], or T(i, j; l) and W(i, l)[j]); every row it reads belongs to a shorter interval.
+// (3) The loose rays. For notch v, ray 2v is the extension beyond z_v of its forward edge (the thesis's
+//     r_v: its R_v is our forward edge, its clockwise order our index order), ray 2v + 1 that of its
+//     backward edge, each clipped at its first contact with the boundary (a vertex included). An edge
+//     along either leaves 180 degrees on one side and less on the other, so it resolves the notch.
+//     Every pair of rays of distinct notches gets, once, the parameter along each line where the other
+//     crosses it, and each ray's list sorted by it (exact rationals, compared once, then kept as ranks):
+//     the thesis's sorted lists, O(r^2 log r). A pair whose crossing lies strictly inside both clipped
+//     rays is a loose point; its two edges lie in int P.
+// (4) The conditions of Lemma 9 for X = G ∩ Q on a ray G of g and Y = H ∩ M on a ray H of h, each exact
+//     and strict. Angles below 180 at X are three positive turns (argued, not proven here: the order
+//     of the neighbours around X is then forced, by Lemma 9's remark on the hull's order): orient(X, z_q, z_g) > 0 (a property of the loose point),
+//     orient(X, z_g, Y) > 0 (Y strictly right of the line of G: unary in m), orient(X, Y, z_q) > 0
+//     (P1: Y strictly left of the line of Q). At Y likewise: orient(Y, z_m, z_h) > 0, X strictly right
+//     of the line of H (unary in q), and P2: X strictly left of the line of M. Since Y moves along H,
+//     P1 is a threshold on Y's rank along H, its direction the sign of u_Q x u_H (a constant when
+//     parallel); P2 a threshold on X's rank along G, by the sign of u_M x u_G. Crossings (Lemma 9.1):
+//     z_g X and z_h Y lie on opposite sides of the line XY, as do z_q X and z_m Y; z_g X meets z_m Y
+//     only when u_M x u_G > 0, and then iff the crossing of the two lines is on both segments, which
+//     under P2 is unary in m; z_q X and z_h Y symmetrically unary in q. P4: the segment XY lies in P.
+// (5) The scan, per interval and per choice of G and H (4 runs, so with the two rays of q and of m all
+//     16 configurations): the queries (outer q, both rays, in order along G) and the inserts (tight
+//     inner m, both rays) that pass their unary conditions are merged along G; inserts with
+//     u_M x u_G > 0 enter an ordered set (keyed by Y's rank along H) in a forward pass, those with
+//     u_M x u_G < 0 in a backward pass, those parallel (P2 constant true) in one set, each query being
+//     answered before inserts of its own rank (strictness). The P2-feasible Y of a query are then
+//     exactly the set; P1 makes them a range from one end of it, walked from that end while P1 holds,
+//     testing P4 on each until one passes. Soundness: every witness satisfies all of (4), which
+//     chosen() checks again in full before the layout (a failure throws: it would be a bug).
+//     Completeness over loose pairs: by (4), every loose pair with the four conditions is reached by
+//     the walk of its query before the walk stops, unless the walk stopped at an earlier witness.
+// Assumed, not proven (A18' of the design note). The count equals chazelle-dobkin-n5's (tips of Q,
+// Theorem 15) iff, whenever n5 finds a tight X4, some loose X4 on tight notches exists or STEP 2
+// already reaches the same count: Theorem 18 with its lost proof, which assumes general position (no
+// reduction meets a notch). Where a loose ray stops at a vertex ("x4_rays_at_vertex") the loose points
+// beyond it do not exist, and nothing here proves that no pattern is lost. The tests compare the two
+// counts on every family, every rotation of x4-quads (both pairings), jittered x4-quads with crossing
+// rays and with spikes where only P4 fails, and many small random polygons: no difference was found,
+// so no fallback to tips was added.
 // Deviations.
-// - The Steiner points are the tips of Q of Theorem 15 (chazelle_dobkin_patterns.h), the same as
-//   chazelle-dobkin-n5's, not the thesis's loose points A_ik = r_i ∩ r_k of Theorem 18 (every notch
-//   edge lined up with the extension of the notch's forward edge). So exactly the X4-patterns of
-//   chazelle-dobkin-n5 are found, which the tests check count for count. A tip joining a and b (a
-//   before b) whose edges are not clipped by a view or by the line ab has a's edge along the
-//   extension of a's backward edge and b's along r_b: one of Definition 2.4's 16 loose configurations,
-//   so the second Steiner points of E(k, j) lie on r_j and the first on r_k, as in the thesis; clipped
-//   tips do not, and the thesis's sorted lists and two-way scan are not used. Theorem 18's proof
-//   (Figure 2.31) and the scan are lost with the figures and the end of the OCR text; this file does
-//   not reconstruct them.
-// - E(k, j) and W(i, l) are filled by a loop: over the outer notches whose tip exists, over the tight
-//   inner notches whose tip exists, stopping at the first X4-pattern. Each test is O(1) (tips cached,
-//   half-planes, crossings) and only its survivors test the segment between the Steiner points against
-//   the boundary's convex chains, O(r log(n/r)). A test pairs a first tip with a second tip, and each
-//   such pair is tested at most once per table (the four notches name the entry and the candidate):
-//   with t the number of tips that exist (counter "tips_found", t <= r^2), O(r^3 + t^2) tests, where
-//   the thesis's scan takes O(r^3). Tips exist for few pairs of notches in the families measured.
-// - Preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (chazelle_dobkin.h): visibility
-//   in place of superranges, and Y-pattern tests that check segments against the boundary.
+// - P4 is tested by a walk (O(r log(n/r)) per test on the boundary's convex chains) rather than in
+//   O(1): the thesis's text stops before saying how; the visible part of the list is one interval
+//   (proven: a point sees an interval of a segment in a simply connected
+//   interior) but its ends need hourglasses between the two rays, not built. Counter
+//   "x4_p4_tests"; in the families measured almost every walk ends at its first test.
+// - The ordered set (a std::set) makes the scan O(r log r) per interval, not O(r).
+// - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
+//   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
+//   superranges, Y-pattern tests that check segments against the boundary).
 //
-// Time: O(n log n + n r + r^2 log n) preprocessing; tips O(r^2) times O(r log(n/r)); STEPs 2 and 4
-// O(r^4 log(n/r)) (chazelle_dobkin.h); STEP 3's X4 term O(r^3) lookups; the tables O(r^3 + t^2)
-// tests, each O(1) or O(r log(n/r)). Worst case (t = r^2) O(n log n + n r + r^5 log(n/r)), as
-// chazelle-dobkin-n5, which makes Theta(r^4) O(1) steps on every polygon where this makes O(r^3 + t^2).
-// Space O(n + r^3) (the tables, one entry per outer notch and interval, only for intervals with a
-// witness). Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
-// convex decomposition (OPT = r + 1 - the most compatible patterns), Steiner points exact.
+// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists; STEPs 2 and 4
+// O(r^4 log(n/r)) (chazelle_dobkin.h); STEP 3's X4 term O(r^3) lookups; the scans O(r^3 log r) list
+// steps plus the P4 tests, O(r log(n/r)) each, at most one per (interval, query, insert) and at least
+// one per witness. Worst case (every P4 test failing) O(n log n + n r + r^5 log(n/r)), as
+// chazelle-dobkin-n5; when a walk ends after O(1) tests, O(n log n + n r + r^4 log(n/r)), which is
+// STEPs 2 and 4. Space O(n + r^3) (a row per interval with a witness) plus O(r^2) rationals for the
+// lists. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
+// convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
 //
-// Counters, besides the program's and the patterns': "x4_table_entries" (outer notches with a tip
-// examined for E and W), "x4_table_witnesses" (entries that found a pattern), "x4_candidates" (pairs
-// of Steiner-point candidates tested while filling the tables), "x4_scan_steps" (STEP 3's lookups),
-// "x4_chosen" (intervals whose S was reached by an X4-pattern).
+// Counters, besides the program's and the patterns': "x4_loose_points" (pairs of rays meeting inside
+// both), "x4_rays_at_vertex" (loose rays clipped at a vertex), "x4_table_entries" (queries past their
+// unary conditions), "x4_table_witnesses" (entries with a pattern, also added to "x4_found"),
+// "x4_scan_steps" (list positions visited while filling, walks included), "x4_p4_tests" (segments XY
+// tested), "x4_lookup_steps" (STEP 3's lookups), "x4_chosen" (intervals whose S was reached by an
+// X4-pattern) and "x4_chosen_from_w" (those from W's pairing).
 #include "algorithms/chazelle_dobkin.h"
 #include "algorithms/ray_shooting.h"
 
@@ -138,7 +159,7 @@ class LooseRays {
     const Rational s = parameter(a, b);
     return origin_[a] + s * direction_[a];
   }
-  bool stops_at_vertex(int a) const { return at_vertex_[a] != 0; }
+  std::int64_t stopped_at_vertices() const { return std::count(at_vertex_.begin(), at_vertex_.end(), 1); }
   std::int64_t loose_points() const { return loose_points_; }
 
  private:
@@ -245,6 +266,8 @@ class ProgramCubic final : public cd::Program {
     counters["x4_p4_tests"] = p4_tests_;
     counters["x4_lookup_steps"] = lookup_steps_;
     counters["x4_chosen"] = chosen_;
+    counters["x4_chosen_from_w"] = chosen_from_w_;
+    counters["x4_rays_at_vertex"] = rays_.stopped_at_vertices();
   }
 
  private:
@@ -304,6 +327,7 @@ class ProgramCubic final : public cd::Program {
     const QPoint y = rays_.point(ray(h, sides, 3), ray(m, sides, 2));
     if (!is_x4(notches, x, y)) throw std::logic_error("chazelle-dobkin: an X4 witness fails Lemma 9");
     ++chosen_;
+    chosen_from_w_ += wrapped;
     if (wrapped) return cd::X4Choice{count, m, h, true, y, x};
     return cd::X4Choice{count, g, m, false, x, y};
   }
@@ -462,7 +486,8 @@ class ProgramCubic final : public cd::Program {
   int notch_count_;
   LooseRays rays_;
   std::vector<Row> rows_;  // at(g, h): the row of interval (g, h), empty when it has no witness
-  std::int64_t table_entries_ = 0, table_witnesses_ = 0, scan_steps_ = 0, p4_tests_ = 0, lookup_steps_ = 0, chosen_ = 0;
+  std::int64_t table_entries_ = 0, table_witnesses_ = 0, scan_steps_ = 0, p4_tests_ = 0, lookup_steps_ = 0, chosen_ = 0,
+               chosen_from_w_ = 0;
 };
 
 Decomposition chazelle_dobkin(const Polygon& p, Counters& counters) {

@@ -14,6 +14,7 @@
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"
+#include "generators/rng.h"
 #include "tests/brute_force.h"
 
 #include <gtest/gtest.h>
@@ -413,6 +414,88 @@ TEST(ChazelleDobkinTables, SameCountOnEveryRotation) {
     const Polygon p = make(s);
     for (std::size_t k = 0; k < p.size(); ++k) same_count(rotated(p, k), label(s) + " rotated " + std::to_string(k));
   }
+}
+
+// Rotating x4-quads moves the notch where the indexing starts, so a group's pairing falls to E (a
+// rotation starting the notches at BR) or to W (starting at BL): both tables must be used.
+TEST(ChazelleDobkinTables, BothPairingsAcrossRotations) {
+  const Polygon p = Polygon::make(generate("x4-quads", 16, 4, 1));
+  std::int64_t from_e = 0, from_w = 0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    Counters counters;
+    find_algorithm("chazelle-dobkin")->run(rotated(p, k), counters);
+    EXPECT_EQ(counters["x4_chosen"], 1) << "rotated " << k;
+    from_w += counters["x4_chosen_from_w"];
+    from_e += counters["x4_chosen"] - counters["x4_chosen_from_w"];
+  }
+  EXPECT_GT(from_e, 0);
+  EXPECT_GT(from_w, 0);
+}
+
+// m groups of x4-quads' slits with each tip moved by up to 4 in x and y (seeded), so that the lines of
+// a group's loose rays cross at all angles (the scan's non-parallel classes), and, with `spike`, a thin
+// spike hanging from the top between some groups' Steiner points, where only P4 can fail.
+Polygon jittered_quads(int m, std::uint64_t seed, bool spike) {
+  Rng rng(seed);
+  auto jitter = [&](int a) { return static_cast<double>(rng.between(-a, a)); };
+  std::vector<Point> v{Point(0, 0)};
+  for (int g = 0; g < m; ++g) {
+    const double x0 = 80.0 * g;
+    for (double mouth : {19.0, 59.0}) {
+      const double tip = mouth == 19.0 ? 24 : 56;
+      v.emplace_back(x0 + mouth, 0), v.emplace_back(x0 + tip + jitter(4), 12 + jitter(4)), v.emplace_back(x0 + mouth + 2, 0);
+    }
+  }
+  v.emplace_back(80.0 * m, 0), v.emplace_back(80.0 * m, 60);
+  for (int g = m; g-- > 0;) {
+    const double x0 = 80.0 * g;
+    v.emplace_back(x0 + 61, 60), v.emplace_back(x0 + 56 + jitter(4), 48 + jitter(4)), v.emplace_back(x0 + 59, 60);
+    if (spike && rng.below(2) == 1) {
+      const double x = x0 + 38 + jitter(4);
+      v.emplace_back(x + 1, 60), v.emplace_back(x + jitter(3), 28 + jitter(6)), v.emplace_back(x - 1, 60);
+    }
+    v.emplace_back(x0 + 21, 60), v.emplace_back(x0 + 24 + jitter(4), 48 + jitter(4)), v.emplace_back(x0 + 19, 60);
+  }
+  v.emplace_back(0, 60);
+  return Polygon::make(v);
+}
+
+TEST(ChazelleDobkinTables, SameCountOnJitteredQuadsWithSpikes) {
+  std::int64_t chosen = 0, p4_failures = 0;
+  for (int m : {1, 2, 3})
+    for (bool spike : {false, true})
+      for (std::uint64_t seed = 1; seed <= 15; ++seed) {
+        const Polygon p = jittered_quads(m, seed, spike);
+        for (std::size_t by : {std::size_t{0}, std::size_t{4}}) {
+          const std::string where = "jittered quads m=" + std::to_string(m) + " spike=" + std::to_string(spike) +
+                                    " seed=" + std::to_string(seed) + " rotated " + std::to_string(by);
+          same_count(rotated(p, by), where);
+          Counters counters;
+          find_algorithm("chazelle-dobkin")->run(rotated(p, by), counters);
+          chosen += counters["x4_chosen"];
+          p4_failures += counters["x4_p4_tests"] - counters["x4_table_witnesses"];
+        }
+      }
+  EXPECT_GT(chosen, 30);
+  EXPECT_GT(p4_failures, 0);
+}
+
+// Many small polygons of every family, each also rotated by a third of its vertices.
+TEST(ChazelleDobkinTables, SameCountOnManySmallPolygons) {
+  std::size_t compared = 0;
+  for (const Family& f : families())
+    for (std::size_t r : {4, 6, 8, 10})
+      for (std::size_t n : {r + 4, 2 * r + 4}) {
+        if (f.infeasible(n, r)) continue;
+        for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+          const Polygon p = Polygon::make(generate(f.name, n, r, seed));
+          for (std::size_t by : {std::size_t{0}, p.size() / 3}) {
+            same_count(rotated(p, by), label({f.name, n, r, seed}) + " rotated " + std::to_string(by));
+            ++compared;
+          }
+        }
+      }
+  EXPECT_GT(compared, 500u);
 }
 
 // Every table witness is an entry and passed one P4 test, every entry a position of a list; the scan
