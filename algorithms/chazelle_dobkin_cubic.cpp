@@ -131,9 +131,7 @@ class LooseRays {
     for (int a = 0; a < count_; ++a) list_loose_points(a, sorted_along(a, meet), meet);
   }
 
-  int count() const { return count_; }
   static int notch(int ray) { return ray / 2; }
-  const QPoint& origin(int a) const { return origin_[a]; }
   // sign(u_a x u_b): +1 when b's direction turns counter-clockwise from a's.
   int cross_sign(int a, int b) const { return cross_sign_[cell(a, b)]; }
   // Rank of the parameter on a's line where b's line meets it, among all such parameters on a's line
@@ -150,10 +148,9 @@ class LooseRays {
   // sign(u_a x (z_b - z_a)): which side of a's line b's notch lies on.
   int base_side(int a, int b) const { return base_side_[cell(a, b)]; }
   // Whether the lines of a and b meet strictly inside both clipped rays (a loose point, the thesis's
-  // A_ik), and whether then the notches of a and b, seen from it, turn counter-clockwise.
-  bool loose(int a, int b) const { return opens_[cell(a, b)] != 0; }
-  bool opens(int a, int b) const { return opens_[cell(a, b)] == 2; }
-  // The loose points on a, in order along it: the rays b with loose(a, b).
+  // A_ik) and the notches of a and b, seen from it, turn counter-clockwise.
+  bool opens(int a, int b) const { return opens_[cell(a, b)] != 0; }
+  // The loose points on a, in order along it: the rays b whose lines meet a's strictly inside both.
   const std::vector<int>& along(int a) const { return along_[a]; }
   QPoint point(int a, int b) const {
     const Rational s = parameter(a, b);
@@ -190,11 +187,13 @@ class LooseRays {
     }
   }
 
+  // Where b's line crosses a's, as a parameter along a (z_a + s u_a). Pre: not parallel.
   Rational parameter(int a, int b) const {
     const Vec& ub = direction_[b];
     return -cross(ub, origin_[a] - origin_[b]) / cross(ub, direction_[a]);
   }
 
+  // The O(1) facts about a pair of rays, computed once: O(r^2) in all.
   void relate(int a, int b, std::vector<Rational>& meet) {
     const std::size_t c = cell(a, b);
     cross_sign_[c] = static_cast<std::int8_t>(sign_of(cross(direction_[a], direction_[b])));
@@ -218,13 +217,14 @@ class LooseRays {
     return rays;
   }
 
+  // The loose points on a, in order along it.
   void list_loose_points(int a, const std::vector<int>& sorted, const std::vector<Rational>& meet) {
     std::vector<int> points;
     for (int b : sorted) {
       const Rational &s = meet[cell(a, b)], &t = meet[cell(b, a)];
       if (s <= 0 || s >= reach_[a] || t <= 0 || t >= reach_[b]) continue;
       const QPoint x = origin_[a] + s * direction_[a];
-      opens_[cell(a, b)] = orient(x, origin_[a], origin_[b]) > 0 ? 2 : 1;
+      opens_[cell(a, b)] = orient(x, origin_[a], origin_[b]) > 0;
       points.push_back(b);
       loose_points_ += a < b;
     }
