@@ -39,7 +39,8 @@
 //     rays is a loose point; its two edges lie in int P.
 // (4) The conditions of Lemma 9 for X = G ∩ Q on a ray G of g and Y = H ∩ M on a ray H of h, each exact
 //     and strict. Angles below 180 at X are three positive turns (argued, not proven here: the order
-//     of the neighbours around X is then forced, by Lemma 9's remark on the hull's order): orient(X, z_q, z_g) > 0 (a property of the loose point),
+//     of the neighbours around X is forced, by Lemma 9's remark on the order of the hull's vertices):
+//     orient(X, z_q, z_g) > 0 (a property of the loose point),
 //     orient(X, z_g, Y) > 0 (Y strictly right of the line of G: unary in m), orient(X, Y, z_q) > 0
 //     (P1: Y strictly left of the line of Q). At Y likewise: orient(Y, z_m, z_h) > 0, X strictly right
 //     of the line of H (unary in q), and P2: X strictly left of the line of M. Since Y moves along H,
@@ -59,20 +60,22 @@
 //     chosen() checks again in full before the layout (a failure throws: it would be a bug).
 //     Completeness over loose pairs: by (4), every loose pair with the four conditions is reached by
 //     the walk of its query before the walk stops, unless the walk stopped at an earlier witness.
-// Assumed, not proven (A18' of the design note). The count equals chazelle-dobkin-n5's (tips of Q,
-// Theorem 15) iff, whenever n5 finds a tight X4, some loose X4 on tight notches exists or STEP 2
-// already reaches the same count: Theorem 18 with its lost proof, which assumes general position (no
-// reduction meets a notch). Where a loose ray stops at a vertex ("x4_rays_at_vertex") the loose points
-// beyond it do not exist, and nothing here proves that no pattern is lost. The tests compare the two
-// counts on every family, every rotation of x4-quads (both pairings), jittered x4-quads with crossing
-// rays and with spikes where only P4 fails, and many small random polygons: no difference was found,
-// so no fallback to tips was added.
+// Proven: every witness is an X4-pattern, so the output is always a valid decomposition, with at most
+// the optimum's patterns. Assumed, not proven (call it A18'): whenever a tight X4-pattern in
+// chazelle-dobkin-n5's sense (tips of Q, Theorem 15) exists, some loose one on tight notches exists too
+// or STEP 2 already reaches the same count. That is Theorem 18 with its lost proof, which assumes
+// general position (no reduction meets a notch): where a loose ray stops at a vertex (counter
+// "x4_rays_at_vertex") the loose points beyond it do not exist, and nothing here proves that no
+// pattern is lost. Under A18' (and n5's own completeness, chazelle_dobkin_patterns.h) S is the same
+// table as n5's, by the induction over intervals. The tests compare the counts on every family, every
+// rotation of x4-quads (both pairings), jittered x4-quads with crossing rays and with spikes where only
+// P4 fails, and many small polygons; no difference was found (nor on some 40,000 further polygons,
+// spikes grazing loose rays included, tried while writing this), so no fallback to tips was added.
 // Deviations.
 // - P4 is tested by a walk (O(r log(n/r)) per test on the boundary's convex chains) rather than in
-//   O(1): the thesis's text stops before saying how; the visible part of the list is one interval
-//   (proven: a point sees an interval of a segment in a simply connected
-//   interior) but its ends need hourglasses between the two rays, not built. Counter
-//   "x4_p4_tests"; in the families measured almost every walk ends at its first test.
+//   O(1): the thesis's text stops before saying how. The part of the list that X sees is one interval
+//   (proven: P's interior is simply connected), but its ends need the hourglass between the two rays,
+//   not built. Counter "x4_p4_tests"; in the families measured almost every walk ends at its first test.
 // - The ordered set (a std::set) makes the scan O(r log r) per interval, not O(r).
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
@@ -80,7 +83,7 @@
 //
 // Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists; STEPs 2 and 4
 // O(r^4 log(n/r)) (chazelle_dobkin.h); STEP 3's X4 term O(r^3) lookups; the scans O(r^3 log r) list
-// steps plus the P4 tests, O(r log(n/r)) each, at most one per (interval, query, insert) and at least
+// steps plus the P4 tests, O(r log(n/r)) each, at most one per interval and loose points X, Y, at least
 // one per witness. Worst case (every P4 test failing) O(n log n + n r + r^5 log(n/r)), as
 // chazelle-dobkin-n5; when a walk ends after O(1) tests, O(n log n + n r + r^4 log(n/r)), which is
 // STEPs 2 and 4. Space O(n + r^3) (a row per interval with a witness) plus O(r^2) rationals for the
