@@ -71,6 +71,12 @@
 // rotation of x4-quads (both pairings), jittered x4-quads with crossing rays and with spikes where only
 // P4 fails, and many small polygons; no difference was found (nor on some 40,000 further polygons,
 // spikes grazing loose rays included, tried while writing this), so no fallback to tips was added.
+// Four notches at a time, A18' in its strong form (an n5 X4 on four notches has a loose one on the same
+// notches and pairing) held for every n5 X4 tried but those with an angle of exactly 180 degrees at a
+// Steiner point, which n5's closed cones accept and Lemma 9 (strict, followed here) does not: e.g.
+// random n=28 r=8 seed=45, notches 0, 1 | 4, 7, tips (-67/7, -80/7) and (-23/5, 92/5) on one line
+// with z_0. Such patterns never changed a count (STEP 2 reached the same); the test
+// EveryTipX4HasALooseX4OnTheSameNotches checks the strong form on samples.
 // Deviations.
 // - P4 is tested by a walk (O(r log(n/r)) per test on the boundary's convex chains) rather than in
 //   O(1): the thesis's text stops before saying how. The part of the list that X sees is one interval
