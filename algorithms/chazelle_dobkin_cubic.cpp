@@ -1,197 +1,502 @@
 // chazelle-dobkin: optimal convex decomposition with Steiner points, Algorithm CD with Section 2.4's
 // organisation of STEP 3's X4 term (B. Chazelle, Computational Geometry and Convexity, thesis, Yale
 // 1980 (000), Sec. 2.4, "An OCD Algorithm Cubic in the Number of Notches": Definition 2.4, Theorem 18,
-// Lemma 9, the sets E(i, j) of Sec. 2.4.2). The dynamic program (STEPs 1-5), its orientation and its
-// reconstructions are in algorithms/chazelle_dobkin.h; pattern detection, including the X4 test used
-// here, in algorithms/chazelle_dobkin_patterns.h.
+// Lemma 9, the sorted lists of points A_ik on the segments r_i, the sets E(i, j) and the selection and
+// two-way scans of Sec. 2.4.2). The dynamic program (STEPs 1-5), its orientation and its
+// reconstructions are in algorithms/chazelle_dobkin.h; pattern detection for the Y-patterns in
+// algorithms/chazelle_dobkin_patterns.h.
 //
-// What the thesis says (Sec. 2.4.1-2.4.2, as far as the OCR text goes). STEP 3 must not try the
-// O(r^2) pairs of inner notches of every interval. E(i, j) is computed right after S(i, j) and holds,
-// for each notch v_k outside V(i, j), "a single piece of data": whether some v_l inside can be patched
-// with v_i, v_j and v_k into an X4-pattern, keeping only the v_l that "cause the same savings in
-// V(i, j), that is, |S(i, j)|", so that STEP 3 decides the X4 term of an interval in O(r) lookups. The
-// text stops while describing the scan that fills E(i, j) in O(r).
+// What the thesis says (Sec. 2.4.1-2.4.2, as far as the OCR text goes). Every X4-pattern that does not
+// reduce to a Y-pattern reduces to a loose one (Theorem 18, Definition 2.4: each notch edge lined up
+// with the extension of one of the notch's two edges, 16 configurations), so its Steiner points are
+// among the points A_ik = r_i ∩ r_k, which STEP 1 sorts along each r_i. E(i, j) is computed right after
+// S(i, j) and holds, per outer notch, "a single piece of data": whether an inner notch completes an
+// X4-pattern that saves |S(i, j)| inside, found by selecting candidates on the two lists (the angle
+// conditions 3 and 4 of Fig. 2.32, and tightness) and "2-way scans" of them, O(r) per interval. The
+// text stops in the middle of the scan; Theorem 18's proof is the lost Figure 2.31.
 //
 // Reconstructed here, with proofs (S is the table of Algorithm CD; S(a, b) = 0 when a >= b).
-// (1) Only tight X4-patterns matter. S is monotone (S(a, b) >= S(a, b - 1), STEP 3's split at b - 1)
-//     and superadditive over disjoint intervals (S(a, c) >= S(a, b) + S(b + 1, c), the split at b).
-//     An X4-pattern on notches i < k < l < j counts c(k, l) = S(i+1, k-1) + S(k+1, l-1) + S(l+1, j-1) + 1,
-//     and S(i+1, k-1) + S(k+1, l-1) <= S(i+1, l-1) (superadditive, then monotone), so
-//     c(k, l) <= S(i+1, j-1) + 1. STEP 3's split term already reaches S(i, i) + S(i+1, j) >= S(i+1, j-1):
-//     the X4 term changes S(i, j) only if some X4-pattern reaches exactly S(i+1, j-1) + 1.
-// (2) Tightness factors. With a = S(i+1, k-1), b = S(k+1, l-1), c = S(l+1, j-1):
-//     a + b + c <= a + S(k+1, j-1) <= S(i+1, j-1), so a + b + c = S(i+1, j-1) iff
-//       T(i, j; k): S(i+1, k-1) + S(k+1, j-1) = S(i+1, j-1)  and
-//       T(k, j; l): S(k+1, l-1) + S(l+1, j-1) = S(k+1, j-1),
-//     and, splitting at l first (a + b <= S(i+1, l-1)), iff T(i, j; l) and T(i, l; k).
-// (3) The two pairings (Figure 2.24-a, -b) give two tables.
-//     E(k, j)[i], for i < k < j: some l in (k, j) with T(k, j; l) and an X4-pattern whose first Steiner
-//       point joins z_i and z_k and whose second joins z_l and z_j. It needs S only strictly inside
-//       V(k, j), so it is computed when the program reaches the interval (k, j) (the thesis's "E(i, j)
-//       computed after S(i, j)"), for every outer notch i at once.
-//     W(i, l)[j], for i < l < j: some k in (i, l) with T(i, l; k) and an X4-pattern whose first Steiner
-//       point joins z_k and z_l and whose second joins z_j and z_i; computed at the interval (i, l).
-//     STEP 3 on (i, j), when S(i+1, j-1) + 1 beats the other terms: the X4 term is S(i+1, j-1) + 1 iff
-//     some k in (i, j) has T(i, j; k) and a witness in E(k, j)[i], or some l in (i, j) has T(i, j; l)
-//     and a witness in W(i, l)[j] (by (1) and (2)); O(r) lookups per interval, O(r^3) in all. The
-//     witness names the other inner notch, and the Steiner points are recomputed from it for the layout.
-//     Every table entry an interval reads belongs to a shorter interval, so it is final.
-//     Consequence, proven by induction over the intervals: S (and therefore B, F and the piece count)
-//     is the same table as chazelle-dobkin-n5's, which takes the maximum of c(k, l) over all pairs
-//     with the same X4 test; only the X4-pattern laid out may differ.
+// (1) Only tight X4-patterns matter. S is monotone and superadditive, so an X4-pattern on notches
+//     i < k < l < j counts at most S(i+1, j-1) + 1, which it reaches iff T(i, j; k) and T(k, j; l), or
+//     iff T(i, j; l) and T(i, l; k), where T(a, b; m): S(a+1, m-1) + S(m+1, b-1) = S(a+1, b-1).
+// (2) Two pairings (Figure 2.24-a, -b), two tables, both filled when the program reaches the interval
+//     (g, h) between the two notches whose rays carry the Steiner points:
+//     E(k, j)[i]: a tight l in (k, j) and an X4 whose first Steiner point X joins z_i, z_k and whose
+//       second Y joins z_l, z_j;  W(i, l)[j]: a tight k in (i, l) and an X4 whose first Steiner point
+//       joins z_k, z_l and whose second joins z_j, z_i. Both are one shape: notches q, g, m, h in
+//       counter-clockwise cyclic order, q outside the interval (g, h) and m inside it, X joining z_q
+//       and z_g, Y joining z_m and z_h ((q, g, m, h) = (i, k, l, j) for E, (j, i, k, l) for W), so one
+//       row per interval (g, h), indexed by q, holds E(g, h) for q < g and W(g, h) for q > h, and one
+//       scan fills both. STEP 3 on (i, j) decides the X4 term from O(r) lookups (T(i, j; k) and
+//       E(k, j)[i], or T(i, j; l) and W(i, l)[j]); every row it reads belongs to a shorter interval.
+// (3) The loose rays. For notch v, ray 2v is the extension beyond z_v of its forward edge (the thesis's
+//     r_v: its R_v is our forward edge, its clockwise order our index order), ray 2v + 1 that of its
+//     backward edge, each clipped at its first contact with the boundary (a vertex included). An edge
+//     along either leaves 180 degrees on one side and less on the other, so it resolves the notch.
+//     Every pair of rays of distinct notches gets, once, the parameter along each line where the other
+//     crosses it, and each ray's list sorted by it (exact rationals, compared once, then kept as ranks):
+//     the thesis's sorted lists, O(r^2 log r). A pair whose crossing lies strictly inside both clipped
+//     rays is a loose point; its two edges lie in int P.
+// (4) The conditions of Lemma 9 for X = G ∩ Q on a ray G of g and Y = H ∩ M on a ray H of h, each exact
+//     and strict. Angles below 180 at X are three positive turns (argued, not proven here: the order
+//     of the neighbours around X is forced, by Lemma 9's remark on the order of the hull's vertices):
+//     orient(X, z_q, z_g) > 0 (a property of the loose point),
+//     orient(X, z_g, Y) > 0 (Y strictly right of the line of G: unary in m), orient(X, Y, z_q) > 0
+//     (P1: Y strictly left of the line of Q). At Y likewise: orient(Y, z_m, z_h) > 0, X strictly right
+//     of the line of H (unary in q), and P2: X strictly left of the line of M. Since Y moves along H,
+//     P1 is a threshold on Y's rank along H, its direction the sign of u_Q x u_H (a constant when
+//     parallel); P2 a threshold on X's rank along G, by the sign of u_M x u_G. Crossings (Lemma 9.1):
+//     z_g X and z_h Y lie on opposite sides of the line XY, as do z_q X and z_m Y; z_g X meets z_m Y
+//     only when u_M x u_G > 0, and then iff the crossing of the two lines is on both segments, which
+//     under P2 is unary in m; z_q X and z_h Y symmetrically unary in q. P4: the segment XY lies in P.
+// (5) The scan, per interval and per choice of G and H (4 runs, so with the two rays of q and of m all
+//     16 configurations): the queries (outer q, both rays, in order along G) and the inserts (tight
+//     inner m, both rays) that pass their unary conditions are merged along G; inserts with
+//     u_M x u_G > 0 enter an ordered set (keyed by Y's rank along H) in a forward pass, those with
+//     u_M x u_G < 0 in a backward pass, those parallel (P2 constant true) in one set, each query being
+//     answered before inserts of its own rank (strictness). The P2-feasible Y of a query are then
+//     exactly the set; P1 makes them a range from one end of it, walked from that end while P1 holds,
+//     testing P4 on each until one passes. Soundness: every witness satisfies all of (4), which
+//     chosen() checks again in full before the layout (a failure throws: it would be a bug).
+//     Completeness over loose pairs: by (4), every loose pair with the four conditions is reached by
+//     the walk of its query before the walk stops, unless the walk stopped at an earlier witness.
+// Proven: every witness is an X4-pattern, so the output is always a valid decomposition, with at most
+// the optimum's patterns. Assumed, not proven (call it A18'): whenever a tight X4-pattern in
+// chazelle-dobkin-n5's sense (tips of Q, Theorem 15) exists, some loose one on tight notches exists too
+// or STEP 2 already reaches the same count. That is Theorem 18 with its lost proof, which assumes
+// general position (no reduction meets a notch): where a loose ray stops at a vertex (counter
+// "x4_rays_at_vertex") the loose points beyond it do not exist, and nothing here proves that no
+// pattern is lost. Under A18' (and n5's own completeness, chazelle_dobkin_patterns.h) S is the same
+// table as n5's, by the induction over intervals. The tests compare the counts on every family, every
+// rotation of x4-quads (both pairings), jittered x4-quads with crossing rays and with spikes where only
+// P4 fails, and many small polygons; no difference was found (nor on some 40,000 further polygons,
+// spikes grazing loose rays included, tried while writing this), so no fallback to tips was added.
+// Four notches at a time, A18' in its strong form (an n5 X4 on four notches has a loose one on the same
+// notches and pairing) held for every n5 X4 tried but those with an angle of exactly 180 degrees at a
+// Steiner point, which n5's closed cones accept and Lemma 9 (strict, followed here) does not: e.g.
+// random n=28 r=8 seed=45, notches 0, 1 | 4, 7, tips (-67/7, -80/7) and (-23/5, 92/5) on one line
+// with z_0. Such patterns never changed a count (STEP 2 reached the same); the test
+// EveryTipX4HasALooseX4OnTheSameNotches checks the strong form on samples.
 // Deviations.
-// - The Steiner points are the tips of Q of Theorem 15 (chazelle_dobkin_patterns.h), the same as
-//   chazelle-dobkin-n5's, not the thesis's loose points A_ik = r_i ∩ r_k of Theorem 18 (every notch
-//   edge lined up with the extension of the notch's forward edge). So exactly the X4-patterns of
-//   chazelle-dobkin-n5 are found, which the tests check count for count. A tip joining a and b (a
-//   before b) whose edges are not clipped by a view or by the line ab has a's edge along the
-//   extension of a's backward edge and b's along r_b: one of Definition 2.4's 16 loose configurations,
-//   so the second Steiner points of E(k, j) lie on r_j and the first on r_k, as in the thesis; clipped
-//   tips do not, and the thesis's sorted lists and two-way scan are not used. Theorem 18's proof
-//   (Figure 2.31) and the scan are lost with the figures and the end of the OCR text; this file does
-//   not reconstruct them.
-// - E(k, j) and W(i, l) are filled by a loop: over the outer notches whose tip exists, over the tight
-//   inner notches whose tip exists, stopping at the first X4-pattern. Each test is O(1) (tips cached,
-//   half-planes, crossings) and only its survivors test the segment between the Steiner points against
-//   the boundary's convex chains, O(r log(n/r)). A test pairs a first tip with a second tip, and each
-//   such pair is tested at most once per table (the four notches name the entry and the candidate):
-//   with t the number of tips that exist (counter "tips_found", t <= r^2), O(r^3 + t^2) tests, where
-//   the thesis's scan takes O(r^3). Tips exist for few pairs of notches in the families measured.
-// - Preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (chazelle_dobkin.h): visibility
-//   in place of superranges, and Y-pattern tests that check segments against the boundary.
+// - P4 is tested by a walk (O(r log(n/r)) per test on the boundary's convex chains) rather than in
+//   O(1): the thesis's text stops before saying how. The part of the list that X sees is one interval
+//   (proven: P's interior is simply connected), but its ends need the hourglass between the two rays,
+//   not built. Counter "x4_p4_tests"; in the families measured almost every walk ends at its first test.
+// - The ordered set (a std::set) makes the scan O(r log r) per interval, not O(r).
+// - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
+//   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
+//   superranges, Y-pattern tests that check segments against the boundary).
 //
-// Time: O(n log n + n r + r^2 log n) preprocessing; tips O(r^2) times O(r log(n/r)); STEPs 2 and 4
-// O(r^4 log(n/r)) (chazelle_dobkin.h); STEP 3's X4 term O(r^3) lookups; the tables O(r^3 + t^2)
-// tests, each O(1) or O(r log(n/r)). Worst case (t = r^2) O(n log n + n r + r^5 log(n/r)), as
-// chazelle-dobkin-n5, which makes Theta(r^4) O(1) steps on every polygon where this makes O(r^3 + t^2).
-// Space O(n + r^3) (the tables, one entry per outer notch and interval, only for intervals with a
-// witness). Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
-// convex decomposition (OPT = r + 1 - the most compatible patterns), Steiner points exact.
+// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists; STEPs 2 and 4
+// O(r^4 log(n/r)) (chazelle_dobkin.h); STEP 3's X4 term O(r^3) lookups; the scans O(r^3 log r) list
+// steps plus the P4 tests, O(r log(n/r)) each, at most one per interval and loose points X, Y, at least
+// one per witness. Worst case (every P4 test failing) O(n log n + n r + r^5 log(n/r)), as
+// chazelle-dobkin-n5; when a walk ends after O(1) tests, O(n log n + n r + r^4 log(n/r)), which is
+// STEPs 2 and 4. Space O(n + r^3) (a row per interval with a witness) plus O(r^2) rationals for the
+// lists. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
+// convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
 //
-// Counters, besides the program's and the patterns': "x4_table_entries" (outer notches with a tip
-// examined for E and W), "x4_table_witnesses" (entries that found a pattern), "x4_candidates" (pairs
-// of Steiner-point candidates tested while filling the tables), "x4_scan_steps" (STEP 3's lookups),
-// "x4_chosen" (intervals whose S was reached by an X4-pattern).
+// Counters, besides the program's and the patterns': "x4_loose_points" (pairs of rays meeting inside
+// both), "x4_rays_at_vertex" (loose rays clipped at a vertex), "x4_table_entries" (queries past their
+// unary conditions), "x4_table_witnesses" (entries with a pattern, also added to "x4_found"),
+// "x4_scan_steps" (list positions visited while filling, walks included), "x4_p4_tests" (segments XY
+// tested), "x4_lookup_steps" (STEP 3's lookups), "x4_chosen" (intervals whose S was reached by an
+// X4-pattern) and "x4_chosen_from_w" (those from W's pairing).
 #include "algorithms/chazelle_dobkin.h"
+#include "algorithms/ray_shooting.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <set>
 #include <stdexcept>
 
 namespace pd {
 namespace {
 
+using Vec = ExactKernel::Vector_2;
+using Segment = ExactKernel::Segment_2;
+
+int sign_of(const Rational& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+int compare(int a, int b) { return a < b ? -1 : (a > b ? 1 : 0); }
+Rational cross(const Vec& u, const Vec& v) { return u.x() * v.y() - u.y() * v.x(); }
+
+// The loose rays of Definition 2.4 and, for every pair of them, where their lines meet (the thesis's
+// points A_ik and its lists sorted along each ray). Ray a = 2 v + side is the extension beyond notch v of
+// its forward edge (side 0, the thesis's r_v) or of its backward edge (side 1), clipped at its first
+// contact with the boundary, a vertex included.
+class LooseRays {
+ public:
+  LooseRays(const Polygon& p, const cd::Patterns& patterns) : count_(2 * static_cast<int>(patterns.notches().size())) {
+    shoot(p, patterns);
+    const std::size_t cells = static_cast<std::size_t>(count_) * static_cast<std::size_t>(count_);
+    cross_sign_.assign(cells, 0);
+    base_side_.assign(cells, 0);
+    meet_sign_.assign(cells, 0);
+    key_.assign(cells, -1);
+    opens_.assign(cells, 0);
+    std::vector<Rational> meet(cells);
+    for (int a = 0; a < count_; ++a)
+      for (int b = 0; b < count_; ++b) relate(a, b, meet);
+    for (int a = 0; a < count_; ++a) list_loose_points(a, sorted_along(a, meet), meet);
+  }
+
+  static int notch(int ray) { return ray / 2; }
+  // sign(u_a x u_b): +1 when b's direction turns counter-clockwise from a's.
+  int cross_sign(int a, int b) const { return cross_sign_[cell(a, b)]; }
+  // Rank of the parameter on a's line where b's line meets it, among all such parameters on a's line
+  // (equal parameters, equal ranks); -1 when they are parallel or of the same notch.
+  int key(int a, int b) const { return key_[cell(a, b)]; }
+  // The sign of that parameter (the notch is at 0).
+  int meet_sign(int a, int b) const { return meet_sign_[cell(a, b)]; }
+  // Which side of the directed line of a the point where b's line meets c's lies on: +1 left, -1 right,
+  // 0 on it. O(1): a threshold on b's line, or a constant when a and b are parallel.
+  int side(int a, int b, int c) const {
+    const int s = cross_sign(a, b);
+    return s == 0 ? base_side_[cell(a, b)] : s * compare(key(b, c), key(b, a));
+  }
+  // sign(u_a x (z_b - z_a)): which side of a's line b's notch lies on.
+  int base_side(int a, int b) const { return base_side_[cell(a, b)]; }
+  // Whether the lines of a and b meet strictly inside both clipped rays (a loose point, the thesis's
+  // A_ik) and the notches of a and b, seen from it, turn counter-clockwise.
+  bool opens(int a, int b) const { return opens_[cell(a, b)] != 0; }
+  // The loose points on a, in order along it: the rays b whose lines meet a's strictly inside both.
+  const std::vector<int>& along(int a) const { return along_[a]; }
+  QPoint point(int a, int b) const {
+    const Rational s = parameter(a, b);
+    return origin_[a] + s * direction_[a];
+  }
+  std::int64_t stopped_at_vertices() const { return std::count(at_vertex_.begin(), at_vertex_.end(), 1); }
+  std::int64_t loose_points() const { return loose_points_; }
+
+ private:
+  std::size_t cell(int a, int b) const { return static_cast<std::size_t>(a) * count_ + b; }
+
+  // Each ray's direction and reach (the parameter of its first contact): O(r log n) per ray.
+  void shoot(const Polygon& p, const cd::Patterns& patterns) {
+    RayShooter shooter(p);
+    for (int a = 0; a < count_; ++a) {
+      const std::size_t v = patterns.notches()[static_cast<std::size_t>(notch(a))];
+      const std::size_t away = a % 2 == 0 ? p.next(v) : p.prev(v);
+      const QPoint z = to_exact(p[v]);
+      const Vec u = z - to_exact(p[away]);
+      const auto hit = shooter.shoot(v, away, false);
+      if (!hit) throw std::logic_error("chazelle-dobkin: a notch's loose ray leaves the polygon");
+      const QPoint w = to_exact(p[hit->vertex]);
+      Rational reach;
+      if (hit->at_vertex) {
+        reach = ((w - z) * u) / (u * u);
+      } else {
+        const Vec e = to_exact(p[p.next(hit->vertex)]) - w;
+        reach = cross(w - z, e) / cross(u, e);
+      }
+      origin_.push_back(z);
+      direction_.push_back(u);
+      reach_.push_back(reach);
+      at_vertex_.push_back(hit->at_vertex ? 1 : 0);
+    }
+  }
+
+  // Where b's line crosses a's, as a parameter along a (z_a + s u_a). Pre: not parallel.
+  Rational parameter(int a, int b) const {
+    const Vec& ub = direction_[b];
+    return -cross(ub, origin_[a] - origin_[b]) / cross(ub, direction_[a]);
+  }
+
+  // The O(1) facts about a pair of rays, computed once: O(r^2) in all.
+  void relate(int a, int b, std::vector<Rational>& meet) {
+    const std::size_t c = cell(a, b);
+    cross_sign_[c] = static_cast<std::int8_t>(sign_of(cross(direction_[a], direction_[b])));
+    base_side_[c] = static_cast<std::int8_t>(sign_of(cross(direction_[a], origin_[b] - origin_[a])));
+    if (notch(a) == notch(b) || cross_sign_[c] == 0) return;
+    meet[c] = parameter(a, b);
+    meet_sign_[c] = static_cast<std::int8_t>(sign_of(meet[c]));
+  }
+
+  // The rays whose lines cross a's, in order along a, with their ranks: O(r log r).
+  std::vector<int> sorted_along(int a, const std::vector<Rational>& meet) {
+    std::vector<int> rays;
+    for (int b = 0; b < count_; ++b)
+      if (notch(a) != notch(b) && cross_sign(a, b) != 0) rays.push_back(b);
+    std::sort(rays.begin(), rays.end(), [&](int x, int y) { return meet[cell(a, x)] < meet[cell(a, y)]; });
+    int rank = -1;
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      if (k == 0 || meet[cell(a, rays[k - 1])] < meet[cell(a, rays[k])]) ++rank;
+      key_[cell(a, rays[k])] = rank;
+    }
+    return rays;
+  }
+
+  // The loose points on a, in order along it.
+  void list_loose_points(int a, const std::vector<int>& sorted, const std::vector<Rational>& meet) {
+    std::vector<int> points;
+    for (int b : sorted) {
+      const Rational &s = meet[cell(a, b)], &t = meet[cell(b, a)];
+      if (s <= 0 || s >= reach_[a] || t <= 0 || t >= reach_[b]) continue;
+      const QPoint x = origin_[a] + s * direction_[a];
+      opens_[cell(a, b)] = orient(x, origin_[a], origin_[b]) > 0;
+      points.push_back(b);
+      loose_points_ += a < b;
+    }
+    along_.push_back(std::move(points));
+  }
+
+  int count_;
+  std::vector<QPoint> origin_;
+  std::vector<Vec> direction_;
+  std::vector<Rational> reach_;
+  std::vector<char> at_vertex_;
+  std::vector<std::int8_t> cross_sign_, base_side_, meet_sign_, opens_;
+  std::vector<int> key_;
+  std::vector<std::vector<int>> along_;
+  std::int64_t loose_points_ = 0;
+};
+
+// A table entry: the inner notch of an X4-pattern found for this outer notch, or -1, and the sides of
+// the four loose rays it uses (bit 0: the outer notch's, 1: g's, 2: the inner notch's, 3: h's).
+struct Witness {
+  std::int16_t inner = -1;
+  std::uint8_t sides = 0;
+};
+
 class ProgramCubic final : public cd::Program {
  public:
   explicit ProgramCubic(const Polygon& p)
-      : cd::Program(p), notch_count_(static_cast<int>(patterns().notches().size())), e_(cells()), w_(cells()) {
+      : cd::Program(p), notch_count_(static_cast<int>(patterns().notches().size())), rays_(p, patterns()),
+        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)) {
     if (notch_count_ > kMaxNotches) throw std::invalid_argument("chazelle-dobkin: more than 32767 notches");
   }
 
   void report(Counters& counters) const {
+    counters["x4_loose_points"] = rays_.loose_points();
     counters["x4_table_entries"] = table_entries_;
     counters["x4_table_witnesses"] = table_witnesses_;
-    counters["x4_candidates"] = candidates_;
+    counters["x4_found"] += table_witnesses_;
     counters["x4_scan_steps"] = scan_steps_;
+    counters["x4_p4_tests"] = p4_tests_;
+    counters["x4_lookup_steps"] = lookup_steps_;
     counters["x4_chosen"] = chosen_;
+    counters["x4_chosen_from_w"] = chosen_from_w_;
+    counters["x4_rays_at_vertex"] = rays_.stopped_at_vertices();
   }
 
  private:
   static constexpr int kMaxNotches = INT16_MAX;
-  // A table row: per outer notch, the witness (the other inner notch) or -1; empty when none has one.
-  using Row = std::vector<std::int16_t>;
+  // The rows of interval (g, h): per outer notch q, E(g, h)[q] for q < g and W(g, h)[q] for q > h.
+  using Row = std::vector<Witness>;
 
-  std::size_t cells() const { return static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_); }
+  // An X4-pattern on notches q, g, m, h in counter-clockwise cyclic order: X joins z_q and z_g, on g's
+  // ray G, Y joins z_m and z_h, on h's ray H. E(k, j)[i] is (q, g, m, h) = (i, k, l, j); W(i, l)[j] is
+  // (j, i, k, l).
+  struct Query {
+    int ray, along;  // Q, and X's rank along G
+  };
+  struct Insert {
+    int ray, along, at;  // M, the rank along G where M's line crosses it, and Y's rank along H
+  };
+  using Inserted = std::set<std::pair<int, int>>;  // (Y's rank along H, M)
+
   std::size_t at(int a, int b) const { return static_cast<std::size_t>(a) * notch_count_ + b; }
 
-  // Called once per interval, shortest first (STEP 3): answers from the tables of shorter intervals,
-  // then fills this interval's own rows, which need S only strictly inside it.
+  // Called once per interval, shortest first (STEP 3): answers from the rows of shorter intervals, then
+  // fills this interval's row, which needs S only strictly inside it.
   std::optional<cd::X4Choice> x4_term(int i, int j, int to_beat) override {
     std::optional<cd::X4Choice> found;
     if (S(i + 1, j - 1) + 1 > to_beat) found = lookup(i, j);
-    fill_e(i, j);
-    fill_w(i, j);
+    fill(i, j);
     return found;
   }
 
   // T(a, b; m): splitting V(a+1, b-1) at m loses nothing.
   bool tight(int a, int b, int m) const { return S(a + 1, m - 1) + S(m + 1, b - 1) == S(a + 1, b - 1); }
 
-  bool has_tip(int a, int b) { return patterns().has_tip(static_cast<std::size_t>(a), static_cast<std::size_t>(b)); }
-
-  static int witness(const Row& row, int index) { return row.empty() ? -1 : row[static_cast<std::size_t>(index)]; }
+  Witness entry(int g, int h, int q) const {
+    const Row& row = rows_[at(g, h)];
+    return row.empty() ? Witness{} : row[static_cast<std::size_t>(q)];
+  }
 
   // STEP 3's X4 term: a tight X4-pattern from E(k, j)[i] or W(i, l)[j], with its Steiner points.
   std::optional<cd::X4Choice> lookup(int i, int j) {
     const int count = S(i + 1, j - 1) + 1;
     for (int k = i + 1; k < j; ++k) {
-      ++scan_steps_;
-      const int l = tight(i, j, k) ? witness(e_[at(k, j)], i) : -1;
-      if (l >= 0) return chosen(count, k, l, false, patterns().x4(i, k, l, j));
+      ++lookup_steps_;
+      const Witness w = tight(i, j, k) ? entry(k, j, i) : Witness{};
+      if (w.inner >= 0) return chosen(count, {i, k, w.inner, j}, w.sides, false);
     }
     for (int l = i + 1; l < j; ++l) {
-      ++scan_steps_;
-      const int k = tight(i, j, l) ? witness(w_[at(i, l)], j - l - 1) : -1;
-      if (k >= 0) return chosen(count, k, l, true, patterns().x4(k, l, j, i));
+      ++lookup_steps_;
+      const Witness w = tight(i, j, l) ? entry(i, l, j) : Witness{};
+      if (w.inner >= 0) return chosen(count, {j, i, w.inner, l}, w.sides, true);
     }
     return std::nullopt;
   }
 
-  cd::X4Choice chosen(int count, int k, int l, bool wrapped, const std::optional<std::pair<QPoint, QPoint>>& points) {
-    if (!points) throw std::logic_error("chazelle-dobkin: an X4 witness no longer tests as a pattern");
+  cd::X4Choice chosen(int count, const std::array<int, 4>& notches, std::uint8_t sides, bool wrapped) {
+    const auto [q, g, m, h] = notches;
+    const QPoint x = rays_.point(ray(g, sides, 1), ray(q, sides, 0));
+    const QPoint y = rays_.point(ray(h, sides, 3), ray(m, sides, 2));
+    if (!is_x4(notches, x, y)) throw std::logic_error("chazelle-dobkin: an X4 witness fails Lemma 9");
     ++chosen_;
-    return cd::X4Choice{count, k, l, wrapped, points->first, points->second};
+    chosen_from_w_ += wrapped;
+    if (wrapped) return cd::X4Choice{count, m, h, true, y, x};
+    return cd::X4Choice{count, g, m, false, x, y};
   }
 
-  // E(k, j): for each outer notch i < k, a tight l in (k, j) with an X4-pattern joining (z_i, z_k) and
-  // (z_l, z_j).
-  void fill_e(int k, int j) {
-    std::vector<int> seconds;
-    for (int l = k + 1; l < j; ++l)
-      if (tight(k, j, l) && has_tip(l, j)) seconds.push_back(l);
-    if (seconds.empty()) return;
-    Row row(static_cast<std::size_t>(k), -1);
-    bool any = false;
-    for (int i = 0; i < k; ++i) {
-      if (!has_tip(i, k)) continue;
-      const int l = first_pattern(seconds, [&](int m) { return patterns().x4(i, k, m, j).has_value(); });
-      row[static_cast<std::size_t>(i)] = static_cast<std::int16_t>(l);
-      any = any || l >= 0;
-    }
-    if (any) e_[at(k, j)] = std::move(row);
+  static int ray(int notch, std::uint8_t sides, int bit) { return 2 * notch + ((sides >> bit) & 1); }
+
+  // Lemma 9 on the loose pair, checked in full and independently of the scan: every angle at X and Y
+  // below 180 degrees, each notch's edge in its closed range and in P, the edges meeting only at X and
+  // Y, and XY in P.
+  bool is_x4(const std::array<int, 4>& notches, const QPoint& x, const QPoint& y) {
+    const auto [q, g, m, h] = notches;
+    const QPoint &zq = z(q), &zg = z(g), &zm = z(m), &zh = z(h);
+    if (orient(x, zq, zg) <= 0 || orient(x, zg, y) <= 0 || orient(x, y, zq) <= 0) return false;
+    if (orient(y, zm, zh) <= 0 || orient(y, zh, x) <= 0 || orient(y, x, zm) <= 0) return false;
+    for (int a : {q, g})
+      if (!joins(a, x)) return false;
+    for (int b : {m, h})
+      if (!joins(b, y)) return false;
+    for (int a : {q, g})
+      for (int b : {m, h})
+        if (CGAL::do_intersect(Segment(z(a), x), Segment(z(b), y))) return false;
+    return patterns().inside(x, y);
   }
 
-  // W(i, l): for each outer notch j > l, a tight k in (i, l) with an X4-pattern joining (z_k, z_l) and
-  // (z_j, z_i).
-  void fill_w(int i, int l) {
-    std::vector<int> firsts;
-    for (int k = i + 1; k < l; ++k)
-      if (tight(i, l, k) && has_tip(k, l)) firsts.push_back(k);
-    if (firsts.empty()) return;
-    Row row(static_cast<std::size_t>(notch_count_ - l - 1), -1);
-    bool any = false;
-    for (int j = l + 1; j < notch_count_; ++j) {
-      if (!has_tip(j, i)) continue;
-      const int k = first_pattern(firsts, [&](int m) { return patterns().x4(m, l, j, i).has_value(); });
-      row[static_cast<std::size_t>(j - l - 1)] = static_cast<std::int16_t>(k);
-      any = any || k >= 0;
-    }
-    if (any) w_[at(i, l)] = std::move(row);
+  bool joins(int notch, const QPoint& s) {
+    return patterns().resolves(patterns().bare(static_cast<std::size_t>(notch)), s) &&
+           patterns().sees(patterns().notches()[static_cast<std::size_t>(notch)], s);
   }
 
-  // The first candidate inner notch that makes an X4-pattern, or -1; one table entry.
-  template <class IsPattern>
-  int first_pattern(const std::vector<int>& candidates, IsPattern is_pattern) {
-    ++table_entries_;
-    for (int m : candidates) {
-      ++candidates_;
-      if (is_pattern(m)) return ++table_witnesses_, m;
+  const QPoint& z(int notch) { return patterns().notch_point(static_cast<std::size_t>(notch)); }
+
+  // The row of interval (g, h): the thesis's scan, once for each choice of the rays G and H.
+  void fill(int g, int h) {
+    if (h - g < 2) return;
+    Row row;
+    for (int sides = 0; sides < 4; ++sides) scan(g, h, 2 * g + (sides & 1), 2 * h + (sides >> 1), row);
+    if (!row.empty()) rows_[at(g, h)] = std::move(row);
+  }
+
+  void scan(int g, int h, int G, int H, Row& row) {
+    const std::vector<Query> queries = open_queries(g, h, G, H, row);
+    if (queries.empty()) return;
+    std::vector<Insert> inserts = usable_inserts(g, h, G, H);
+    if (inserts.empty()) return;
+    std::sort(inserts.begin(), inserts.end(), [](const Insert& a, const Insert& b) { return a.along < b.along; });
+    sweep_forward(queries, inserts, G, H, row);
+    sweep_backward(queries, inserts, G, H, row);
+    Inserted parallel;
+    for (const Insert& m : inserts)
+      if (rays_.cross_sign(m.ray, G) == 0) parallel.insert({m.at, m.ray});
+    for (const Query& q : queries) find_visible(q, parallel, G, H, row);
+  }
+
+  // The outer notches q, in order along G, whose loose point X on G passes the conditions that do not
+  // depend on the inner notch: X opens towards z_g (angle z_q X z_g), lies strictly right of the line
+  // of H (angle at Y towards X), P1 is not a constant false, and z_q X cannot cross z_h Y.
+  std::vector<Query> open_queries(int g, int h, int G, int H, const Row& row) {
+    std::vector<Query> out;
+    for (int Q : rays_.along(G)) {
+      ++scan_steps_;
+      const int q = LooseRays::notch(Q);
+      if ((q > g && q < h) || (!row.empty() && row[static_cast<std::size_t>(q)].inner >= 0)) continue;
+      if (!rays_.opens(Q, G) || rays_.side(H, G, Q) >= 0) continue;
+      const int turn = rays_.cross_sign(Q, H);
+      if (turn == 0 && rays_.base_side(Q, H) <= 0) continue;
+      if (turn > 0 && crosses_before(Q, H, G)) continue;
+      ++table_entries_;
+      out.push_back({Q, rays_.key(G, Q)});
     }
-    return -1;
+    return out;
+  }
+
+  // The tight inner notches m whose loose point Y on H passes the conditions that do not depend on the
+  // outer notch: Y opens towards z_h, lies strictly right of the line of G, P2 is not a constant false,
+  // and z_m Y cannot cross z_g X.
+  std::vector<Insert> usable_inserts(int g, int h, int G, int H) {
+    std::vector<Insert> out;
+    for (int M : rays_.along(H)) {
+      ++scan_steps_;
+      const int m = LooseRays::notch(M);
+      if (m <= g || m >= h || !tight(g, h, m)) continue;
+      if (!rays_.opens(M, H) || rays_.side(G, H, M) >= 0) continue;
+      const int turn = rays_.cross_sign(M, G);
+      if (turn == 0 && rays_.base_side(M, G) <= 0) continue;
+      if (turn > 0 && crosses_before(M, G, H)) continue;
+      out.push_back({M, rays_.key(G, M), rays_.key(H, M)});
+    }
+    return out;
+  }
+
+  // Whether the segment of ray A up to its loose point with C meets ray B's segment from its notch to
+  // the crossing of the two lines (with B's segment reaching past the crossing, which P1 or P2 ensures
+  // in the class where this is asked).
+  bool crosses_before(int A, int B, int C) const {
+    return rays_.meet_sign(B, A) >= 0 && rays_.meet_sign(A, B) >= 0 && rays_.key(A, B) <= rays_.key(A, C);
+  }
+
+  // P2 for inserts whose line crosses G with cross(u_m, u_g) > 0 asks X beyond the crossing: a prefix
+  // along G. Queries are answered before the inserts of the same rank (strict inequality).
+  void sweep_forward(const std::vector<Query>& queries, const std::vector<Insert>& inserts, int G, int H, Row& row) {
+    Inserted set;
+    std::size_t next = 0;
+    for (const Query& q : queries) {
+      for (; next < inserts.size() && inserts[next].along < q.along; ++next) {
+        ++scan_steps_;
+        if (rays_.cross_sign(inserts[next].ray, G) > 0) set.insert({inserts[next].at, inserts[next].ray});
+      }
+      find_visible(q, set, G, H, row);
+    }
+  }
+
+  void sweep_backward(const std::vector<Query>& queries, const std::vector<Insert>& inserts, int G, int H, Row& row) {
+    Inserted set;
+    std::size_t next = inserts.size();
+    for (auto q = queries.rbegin(); q != queries.rend(); ++q) {
+      for (; next > 0 && inserts[next - 1].along > q->along; --next) {
+        ++scan_steps_;
+        if (rays_.cross_sign(inserts[next - 1].ray, G) < 0) set.insert({inserts[next - 1].at, inserts[next - 1].ray});
+      }
+      find_visible(*q, set, G, H, row);
+    }
+  }
+
+  // P1 bounds Y's rank along H on one side (or not at all when Q and H are parallel): walk the inserted
+  // Y from the extreme inwards while P1 holds, and test P4 (XY in P) on each until one passes.
+  void find_visible(const Query& query, const Inserted& set, int G, int H, Row& row) {
+    const int q = LooseRays::notch(query.ray);
+    if (set.empty() || (!row.empty() && row[static_cast<std::size_t>(q)].inner >= 0)) return;
+    const int turn = rays_.cross_sign(query.ray, H);
+    const int bound = turn == 0 ? 0 : rays_.key(H, query.ray);
+    const QPoint x = rays_.point(G, query.ray);
+    auto visible = [&](const std::pair<int, int>& y) {
+      ++scan_steps_;
+      ++p4_tests_;
+      if (!patterns().inside(x, rays_.point(H, y.second))) return false;
+      record(row, q, query.ray, G, y.second, H);
+      return true;
+    };
+    if (turn >= 0) {
+      for (auto y = set.rbegin(); y != set.rend() && (turn == 0 || y->first > bound); ++y)
+        if (visible(*y)) return;
+    } else {
+      for (auto y = set.begin(); y != set.end() && y->first < bound; ++y)
+        if (visible(*y)) return;
+    }
+  }
+
+  void record(Row& row, int q, int Q, int G, int M, int H) {
+    if (row.empty()) row.assign(static_cast<std::size_t>(notch_count_), Witness{});
+    const auto bit = [](int ray, int shift) { return static_cast<std::uint8_t>((ray & 1) << shift); };
+    row[static_cast<std::size_t>(q)] = {static_cast<std::int16_t>(LooseRays::notch(M)),
+                                        static_cast<std::uint8_t>(bit(Q, 0) | bit(G, 1) | bit(M, 2) | bit(H, 3))};
+    ++table_witnesses_;
   }
 
   int notch_count_;
-  std::vector<Row> e_, w_;  // E(k, j) at at(k, j), indexed by i; W(i, l) at at(i, l), indexed by j - l - 1
-  std::int64_t table_entries_ = 0, table_witnesses_ = 0, candidates_ = 0, scan_steps_ = 0, chosen_ = 0;
+  LooseRays rays_;
+  std::vector<Row> rows_;  // at(g, h): the row of interval (g, h), empty when it has no witness
+  std::int64_t table_entries_ = 0, table_witnesses_ = 0, scan_steps_ = 0, p4_tests_ = 0, lookup_steps_ = 0, chosen_ = 0,
+               chosen_from_w_ = 0;
 };
 
 Decomposition chazelle_dobkin(const Polygon& p, Counters& counters) {
