@@ -24,7 +24,7 @@
 //     E(k, j)[i]: a tight l in (k, j) and an X4 whose first Steiner point X joins z_i, z_k and whose
 //       second Y joins z_l, z_j;  W(i, l)[j]: a tight k in (i, l) and an X4 whose first Steiner point
 //       joins z_k, z_l and whose second joins z_j, z_i. Both are one shape: notches q, g, m, h in
-//       counter-clockwise cyclic order, q outside the interval (g, h) and m inside it, X joining z_q
+//       counter-clockwise cyclic order, q outside the interval [g, h] and m inside it, X joining z_q
 //       and z_g, Y joining z_m and z_h ((q, g, m, h) = (i, k, l, j) for E, (j, i, k, l) for W), so one
 //       row per interval (g, h), indexed by q, holds E(g, h) for q < g and W(g, h) for q > h, and one
 //       scan fills both. STEP 3 on (i, j) decides the X4 term from O(r) lookups (T(i, j; k) and
@@ -34,8 +34,8 @@
 //     backward edge, each clipped at its first contact with the boundary (a vertex included). An edge
 //     along either leaves 180 degrees on one side and less on the other, so it resolves the notch.
 //     Every pair of rays of distinct notches gets, once, the parameter along each line where the other
-//     crosses it, and each ray's list sorted by it (exact rationals, compared once, then kept as ranks):
-//     the thesis's sorted lists, O(r^2 log r). A pair whose crossing lies strictly inside both clipped
+//     crosses it, and each ray's list sorted by it (exact rationals, computed once, sorted, then kept
+//     as ranks): the thesis's sorted lists, O(r^2 log r). A pair whose crossing lies strictly inside both clipped
 //     rays is a loose point; its two edges lie in int P.
 // (4) The conditions of Lemma 9 for X = G ∩ Q on a ray G of g and Y = H ∩ M on a ray H of h, each exact
 //     and strict. Angles below 180 at X are three positive turns (argued, not proven here: the order
@@ -261,10 +261,8 @@ struct Witness {
 class ProgramCubic final : public cd::Program {
  public:
   explicit ProgramCubic(const Polygon& p)
-      : cd::Program(p), notch_count_(static_cast<int>(patterns().notches().size())), rays_(p, patterns()),
-        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)) {
-    if (notch_count_ > kMaxNotches) throw std::invalid_argument("chazelle-dobkin: more than 32767 notches");
-  }
+      : cd::Program(p), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
+        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)) {}
 
   void report(Counters& counters) const {
     counters["x4_loose_points"] = rays_.loose_points();
@@ -281,6 +279,12 @@ class ProgramCubic final : public cd::Program {
 
  private:
   static constexpr int kMaxNotches = INT16_MAX;
+  // The notch count, refused before any table is built when a witness could not hold it.
+  static int checked(std::size_t notches) {
+    if (notches > static_cast<std::size_t>(kMaxNotches))
+      throw std::invalid_argument("chazelle-dobkin: more than 32767 notches");
+    return static_cast<int>(notches);
+  }
   // The rows of interval (g, h): per outer notch q, E(g, h)[q] for q < g and W(g, h)[q] for q > h.
   using Row = std::vector<Witness>;
 
@@ -398,7 +402,7 @@ class ProgramCubic final : public cd::Program {
     for (int Q : rays_.along(G)) {
       ++scan_steps_;
       const int q = LooseRays::notch(Q);
-      if ((q > g && q < h) || (!row.empty() && row[static_cast<std::size_t>(q)].inner >= 0)) continue;
+      if ((q >= g && q <= h) || (!row.empty() && row[static_cast<std::size_t>(q)].inner >= 0)) continue;
       if (!rays_.opens(Q, G) || rays_.side(H, G, Q) >= 0) continue;
       const int turn = rays_.cross_sign(Q, H);
       if (turn == 0 && rays_.base_side(Q, H) <= 0) continue;

@@ -81,7 +81,7 @@ struct Trapezoid {
 // first), so that a search step reads one record. The search reads one cell per step at a random
 // address, so the record is kept at 40 bytes: the kind is folded into the child fields (a leaf has no
 // children; a segment node's right child carries kSegmentNode), which limits a decomposition to 2^31
-// cells, n < 3*10^8.
+// cells: with room for 8n of them reserved, n < 2.6*10^8.
 constexpr std::uint32_t kSegmentNode = 0x80000000u;
 
 struct Cell {
@@ -548,24 +548,34 @@ class Trapezoidation {
     return point_phase_[v] == phases_ + 1 ? point_node_[v] : start_of(v, v);
   }
 
-  // One step of t: a search step; or reading its trapezoid and prefetching the vertex to compare
-  // with; or moving on along its edge. False when the run is done.
+  // One step of t, of its search or of its walk; false when its run is done.
   bool trace_step(Tracer& t) {
+    if (t.searching && search_step(t)) return true;
+    return walk_step(t);
+  }
+
+  // A step of the search for the start of t's run; false once it stands on the trapezoid holding it.
+  bool search_step(Tracer& t) {
     const std::uint32_t s = t.edge;
-    if (t.searching) {
-      const Cell& c = cells_[t.cell];
-      if (!c.is_leaf()) {
-        t.cell = child_toward(c, at(s), at(next(s)));
-        ++search_steps_;
-        prefetch(cells_[t.cell]);
-        return true;
-      }
+    const Cell& c = cells_[t.cell];
+    if (c.is_leaf()) {
       t.searching = false;
       start_of(s, s) = t.cell;
+      return false;
     }
+    t.cell = child_toward(c, at(s), at(next(s)));
+    ++search_steps_;
+    prefetch(cells_[t.cell]);
+    return true;
+  }
+
+  // Reads t's trapezoid and prefetches the vertex the walk compares with; or, that done, moves on to
+  // the next trapezoid along the edge, or to the run's next edge where the edge ends. False when the
+  // run is done.
+  bool walk_step(Tracer& t) {
+    const std::uint32_t s = t.edge;
     if (!t.vertex_fetched) {
-      const Trapezoid& here = z(t.cell);
-      const std::uint32_t b = s == upper(s) ? here.lo : here.hi;
+      const std::uint32_t b = compared_vertex(s, z(t.cell));
       if (b != kNone) prefetch(at(b));
       t.vertex_fetched = true;
       return true;
@@ -585,11 +595,14 @@ class Trapezoidation {
     return true;
   }
 
+  // The vertex whose cut a walk along edge s (from vertex s to s+1) leaves trapezoid t by.
+  std::uint32_t compared_vertex(std::uint32_t s, const Trapezoid& t) const { return s == upper(s) ? t.lo : t.hi; }
+
   // The trapezoid after t along edge s walked from vertex s to vertex s+1, or kNone if s+1 lies in t.
   std::uint32_t step_along(std::uint32_t s, std::uint32_t t) const {
     if (s == upper(s)) return below_along(s, t);
     const Trapezoid& z = cells_[t].z;
-    const std::uint32_t b = z.hi;
+    const std::uint32_t b = compared_vertex(s, z);
     if (b == kNone || !above(segs_[s].top, at(b))) return kNone;
     return has_two(z.up) ? z.up[right_of(s, b) ? 0 : 1] : z.up[0];
   }
