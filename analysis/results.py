@@ -74,7 +74,19 @@ def merge_contexts(contexts):
             elif key not in merged or not isinstance(value, str):
                 merged[key] = value
     merged["invocations"] = str(len(contexts))
+    merged["git_versions"] = " | ".join(_versions(contexts))
     return merged
+
+
+def _versions(contexts):
+    """Each invocation's commit, abbreviated and marked (dirty) when its tree had changes, in order and
+    without repeats: merging git_commit and git_dirty separately loses which commit was dirty."""
+    versions = []
+    for context in contexts:
+        label = context.get("git_commit", "?")[:12] + (" (dirty)" if context.get("git_dirty") == "true" else "")
+        if label not in versions:
+            versions.append(label)
+    return versions
 
 
 def assemble(journal_paths, stem, extra_context=None):
