@@ -72,7 +72,7 @@ class CurveCheck:
 
     def __init__(self, label, points, claim):
         self.label = label
-        self.fit = fit.fit_exponents(points)
+        self.fit = fit.fit_exponents(points, along_curve=label != "all")
         self.claims = fit.term_claims(self.fit, claim) if self.fit else None
         self.verdict = fit.verdict(self.fit, self.claims) if self.fit else None
 

@@ -117,13 +117,28 @@ def design(points):
     return [], points
 
 
-def fit_exponents(points):
+def design_along_curve(points):
+    """(names, points) for one curve of a sweep, whose points lie along a single direction: the exponent
+    of n when n varies (at a fixed r, or with r any function of n; the claim is fitted on the same
+    points, so both are slopes along the curve), else that of r. Splitting a curve's growth into a and
+    b would extrapolate off the curve: along n with r = min(16, n/2), a + b is no slope it has."""
+    points = [p for p in points if p[2] > 0]
+    if _varies([p[0] for p in points]):
+        return ["a"], points
+    with_r = [p for p in points if p[1] > 0]
+    if _varies([p[1] for p in with_r]):
+        return ["b"], with_r
+    return [], points
+
+
+def fit_exponents(points, along_curve=False):
     """The Fit of log y on the larger sizes of points [(n, r, y)], or None when too few points can
-    tell the exponents apart (two more points than exponents, so the interval has a meaning)."""
+    tell the exponents apart (two more points than exponents, so the interval has a meaning). With
+    along_curve, the points are one curve of a sweep (design_along_curve)."""
     points = [p for p in points if p[2] > 0]
     if not points:
         return None
-    chosen_names, chosen = design(large_sizes(points))
+    chosen_names, chosen = (design_along_curve if along_curve else design)(large_sizes(points))
     if not chosen_names or len(chosen) < len(chosen_names) + 2:
         return None
     result = _regress(chosen_names, chosen, [p[2] for p in chosen])

@@ -37,6 +37,16 @@ class FitTest(unittest.TestCase):
             self.assertEqual(f.names, ["a"])
             self.assertAlmostEqual(f.value("a"), 2.0, places=6)
 
+    def test_a_curve_with_r_capped_is_fitted_along_itself(self):
+        # Time n^4 along n with r = min(16, n/2) and three seeds (noise): one exponent, the slope along
+        # the curve; a and b apart would be judged along r = n too, where the curve has no points.
+        capped = power_law(4.0, 0.0, [10, 20, 50, 100], lambda n: [min(16, n // 2)] * 3, noise=0.05)
+        f = fit.fit_exponents(capped, along_curve=True)
+        self.assertEqual(f.names, ["a"])
+        self.assertAlmostEqual(f.value("a"), 4.0, delta=0.1)
+        claims = fit.term_claims(f, bound_expr.parse_time_bound("n^4"))
+        self.assertTrue(fit.verdict(f, claims).startswith("consistent"))
+
     def test_fits_only_b_at_one_size(self):
         f = fit.fit_exponents(power_law(1.0, 3.0, [1000], lambda n: [1, 2, 4, 8, 16, 32]))
         self.assertEqual(f.names, ["b"])
