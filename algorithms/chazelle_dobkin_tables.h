@@ -70,9 +70,7 @@ class LooseRays {
  private:
   using Vec = ExactKernel::Vector_2;
 
-  static int sign_of(const Rational& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
   static int compare(int a, int b) { return a < b ? -1 : (a > b ? 1 : 0); }
-  static Rational cross(const Vec& u, const Vec& v) { return u.x() * v.y() - u.y() * v.x(); }
 
   std::size_t cell(int a, int b) const { return static_cast<std::size_t>(a) * count_ + b; }
 
@@ -92,7 +90,7 @@ class LooseRays {
         reach = ((w - z) * u) / (u * u);
       } else {
         const Vec e = to_exact(p[p.next(hit->vertex)]) - w;
-        reach = cross(w - z, e) / cross(u, e);
+        reach = CGAL::determinant(w - z, e) / CGAL::determinant(u, e);
       }
       origin_.push_back(z);
       direction_.push_back(u);
@@ -104,17 +102,17 @@ class LooseRays {
   // Where b's line crosses a's, as a parameter along a (z_a + s u_a). Pre: not parallel.
   Rational parameter(int a, int b) const {
     const Vec& ub = direction_[b];
-    return -cross(ub, origin_[a] - origin_[b]) / cross(ub, direction_[a]);
+    return -CGAL::determinant(ub, origin_[a] - origin_[b]) / CGAL::determinant(ub, direction_[a]);
   }
 
   // The O(1) facts about a pair of rays, computed once: O(r^2) in all.
   void relate(int a, int b, std::vector<Rational>& meet) {
     const std::size_t c = cell(a, b);
-    cross_sign_[c] = static_cast<std::int8_t>(sign_of(cross(direction_[a], direction_[b])));
-    base_side_[c] = static_cast<std::int8_t>(sign_of(cross(direction_[a], origin_[b] - origin_[a])));
+    cross_sign_[c] = static_cast<std::int8_t>(CGAL::sign(CGAL::determinant(direction_[a], direction_[b])));
+    base_side_[c] = static_cast<std::int8_t>(CGAL::sign(CGAL::determinant(direction_[a], origin_[b] - origin_[a])));
     if (notch(a) == notch(b) || cross_sign_[c] == 0) return;
     meet[c] = parameter(a, b);
-    meet_sign_[c] = static_cast<std::int8_t>(sign_of(meet[c]));
+    meet_sign_[c] = static_cast<std::int8_t>(CGAL::sign(meet[c]));
   }
 
   // The rays whose lines cross a's, in order along a, with their ranks: O(r log r).
@@ -228,7 +226,6 @@ class ProgramCubic final : public Program {
 
   // T(a, b; m): splitting V(a+1, b-1) at m loses nothing.
   bool tight(int a, int b, int m) const { return S(a + 1, m - 1) + S(m + 1, b - 1) == S(a + 1, b - 1); }
-
 
   // STEP 3's X4 term: a tight X4-pattern from E(k, j)[i] or W(i, l)[j], with its Steiner points.
   std::optional<X4Choice> lookup(int i, int j) {
