@@ -3,12 +3,14 @@
 
   - killing a sweep in the middle and running the same command again loses no finished key, runs no
     finished key again, and ends with the same keys and piece counts as an uninterrupted run;
-  - two shards merged with merge.py equal one unsharded run in keys, statuses and piece counts.
+  - two shards merged with merge.py equal one unsharded run in keys, statuses and piece counts;
+  - an algorithm's own budget ("budget_seconds_for") replaces the sweep's for that algorithm only.
 
 usage: integration_sweep.py --build DIR
 """
 
 import argparse
+import collections
 import json
 import os
 import shutil
@@ -73,17 +75,19 @@ class SweepIntegration(unittest.TestCase):
     def tearDown(self):
         shutil.rmtree(self.root)
 
-    def workdir(self, name):
+    def workdir(self, name, sweeps=None):
         path = os.path.join(self.root, name)
         os.makedirs(os.path.join(path, "results"))
         with open(os.path.join(path, "sweeps.json"), "w", encoding="utf-8") as f:
-            json.dump(TINY_SWEEPS, f)
+            json.dump(sweeps or TINY_SWEEPS, f)
         return path
 
-    def run_sweep(self, workdir, *extra):
+    def run_sweep(self, workdir, *extra, expect_ok=True):
         done = subprocess.run(sweep_command(workdir, *extra), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                               text=True, check=False)
-        self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+        if expect_ok:
+            self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+        return done
 
     def reference(self):
         whole = self.workdir("whole")
@@ -133,6 +137,24 @@ class SweepIntegration(unittest.TestCase):
             names = [run["name"] for run in json.load(f)["benchmarks"]]
         with open(os.path.join(self.root, "whole", "results", "tiny.json"), encoding="utf-8") as f:
             self.assertEqual(names, [run["name"] for run in json.load(f)["benchmarks"]], "keys out of sweep order")
+
+    def test_an_algorithms_own_budget_replaces_the_sweeps(self):
+        sweeps = json.loads(json.dumps(TINY_SWEEPS))
+        sweeps["tiny"]["budget_seconds"] = 1e-9
+        sweeps["tiny"]["budget_seconds_for"] = {"naive": 60}
+        own = self.workdir("own", sweeps)
+        self.run_sweep(own)
+        statuses = collections.defaultdict(collections.Counter)
+        for name, (status, _) in pieces_by_key(os.path.join(own, "results", "tiny.json")).items():
+            statuses[name.split("/")[0]][status] += 1
+        self.assertEqual(set(statuses["naive"]), {"ok"}, statuses["naive"])
+        for other in ("ear-n2", "hertel-mehlhorn"):
+            self.assertGreater(statuses[other]["skipped"], 0, statuses[other])
+
+        sweeps["tiny"]["budget_seconds_for"] = {"no-such-algorithm": 60}
+        done = self.run_sweep(self.workdir("unknown", sweeps), expect_ok=False)
+        self.assertNotEqual(done.returncode, 0)
+        self.assertIn("budget_seconds_for: unknown algorithm no-such-algorithm", done.stderr)
 
     @staticmethod
     def _finished(journal):

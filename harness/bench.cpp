@@ -14,6 +14,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <string>
 #include <vector>
@@ -102,6 +103,13 @@ std::string stem(const Options& o) {
   return s;
 }
 
+// "name=seconds, ..." (empty when every algorithm has the sweep's budget).
+std::string budgets_text(const std::map<std::string, double>& budgets) {
+  std::string text;
+  for (const auto& [name, seconds] : budgets) text += (text.empty() ? "" : ", ") + name + "=" + double_text(seconds);
+  return text;
+}
+
 SweepRunner::Context run_context(const Options& o, const Sweep& sweep) {
   SweepRunner::Context c = provenance();
   c.insert(c.end(), {{"sweep", sweep.name},
@@ -110,6 +118,7 @@ SweepRunner::Context run_context(const Options& o, const Sweep& sweep) {
                      {"shard", std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count)},
                      {"min_time", double_text(sweep.min_time)},
                      {"budget_seconds", double_text(sweep.budget_seconds)},
+                     {"budget_seconds_for", budgets_text(sweep.budget_seconds_for)},
                      {"timeout_seconds", double_text(sweep.timeout_seconds)}});
   // Google Benchmark writes its own "date"; the journal's context carries provenance's.
   for (const auto& [key, value] : c)

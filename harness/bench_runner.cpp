@@ -70,7 +70,7 @@ SweepRunner::SweepRunner(const Sweep& sweep, Journal& journal, Progress& progres
       journal_(journal),
       progress_(progress),
       context_(std::move(context)),
-      budget_(sweep.budget_seconds),
+      budget_(sweep.budget_seconds, sweep.budget_seconds_for),
       watchdog_([this] { watch(); }) {}
 
 SweepRunner::~SweepRunner() {

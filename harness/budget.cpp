@@ -38,6 +38,11 @@ bool Budget::cheaper(const Algorithm& a, const Point& p, std::size_t n, std::siz
   return f ? (*f)(p.n, p.r) <= (*f)(n, r) : p.r <= r;
 }
 
+double Budget::seconds_for(const Algorithm& a) const {
+  const auto own = budget_seconds_for_.find(a.name);
+  return own == budget_seconds_for_.end() ? budget_seconds_ : own->second;
+}
+
 std::optional<std::string> Budget::skip_reason(const Algorithm& a, const std::string& family, std::size_t n,
                                                std::size_t r) const {
   if (n > a.size_ceiling)
@@ -53,8 +58,9 @@ std::optional<std::string> Budget::skip_reason(const Algorithm& a, const std::st
   }
   if (!reference) return std::nullopt;
   const double predicted = reference->seconds * (*f)(n, r) / (*f)(reference->n, reference->r);
-  if (predicted <= budget_seconds_) return std::nullopt;
-  return "skipped (budget): predicted " + seconds_text(predicted) + " > budget " + seconds_text(budget_seconds_) +
+  const double budget = seconds_for(a);
+  if (predicted <= budget) return std::nullopt;
+  return "skipped (budget): predicted " + seconds_text(predicted) + " > budget " + seconds_text(budget) +
          " from " + seconds_text(reference->seconds) + " at " + point_text(reference->n, reference->r) + " and the claimed O(" +
          a.time_bound + ")";
 }

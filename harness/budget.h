@@ -6,7 +6,8 @@
 //     (Algorithm::time_bound), would exceed the budget.
 // "Cheaper" means n' <= n and f(n', r') <= f(n, r) for the claimed bound f; when the claim is not in
 // BoundExpr's grammar, n' <= n and r' <= r, and no extrapolation (the hard timeout still applies).
-// Any seed counts: seeds of one grid point cost about the same.
+// Any seed counts: seeds of one grid point cost about the same. The budget is the sweep's, or the
+// algorithm's own where the sweep gives it one.
 #pragma once
 
 #include "core/registry.h"
@@ -23,7 +24,8 @@ namespace pd {
 
 class Budget {
  public:
-  explicit Budget(double budget_seconds) : budget_seconds_(budget_seconds) {}
+  Budget(double budget_seconds, std::map<std::string, double> budget_seconds_for)
+      : budget_seconds_(budget_seconds), budget_seconds_for_(std::move(budget_seconds_for)) {}
 
   // A finished key: seconds per call of the algorithm.
   void record_time(const Algorithm& a, const std::string& family, std::size_t n, std::size_t r, double seconds);
@@ -42,8 +44,10 @@ class Budget {
   };
   const std::optional<BoundExpr>& bound(const Algorithm& a) const;
   bool cheaper(const Algorithm& a, const Point& p, std::size_t n, std::size_t r) const;
+  double seconds_for(const Algorithm& a) const;
 
   double budget_seconds_;
+  std::map<std::string, double> budget_seconds_for_;  // by algorithm, in place of budget_seconds_
   std::map<std::pair<std::string, std::string>, std::vector<Point>> seen_;  // by (algorithm, family)
   mutable std::map<std::string, std::optional<BoundExpr>> bounds_;          // parsed claims, by algorithm
 };

@@ -107,6 +107,18 @@ std::vector<std::string> select_families(const Json& v, const std::string& where
   return names;
 }
 
+// "budget_seconds_for": {"algorithm": seconds, ...}, optional.
+std::map<std::string, double> budgets_by_algorithm(const Json* v, const std::string& where) {
+  std::map<std::string, double> budgets;
+  if (!v) return budgets;
+  if (!v->is_object()) throw SweepError(where + ": \"budget_seconds_for\" must be an object of algorithm names and seconds");
+  for (const auto& [name, value] : v->fields) {
+    if (!find_algorithm(name)) throw SweepError(where + ": budget_seconds_for: unknown algorithm " + name);
+    budgets[name] = positive_number(*v, name, where + " budget_seconds_for");
+  }
+  return budgets;
+}
+
 std::vector<std::string> select_algorithms(const Json* v, const std::string& where) {
   std::vector<std::string> names;
   if (!v || (v->type == Json::Type::String && v->text == "all")) {
@@ -184,6 +196,7 @@ Sweep load_sweep(const std::string& path, const std::string& name) {
   for (const Json* v : array_items(member(*spec, "seeds", where), where + " seeds")) s.seeds.push_back(count_of(*v, where + " seeds"));
   s.min_time = positive_number(*spec, "min_time", where);
   s.budget_seconds = positive_number(*spec, "budget_seconds", where);
+  s.budget_seconds_for = budgets_by_algorithm(spec->get("budget_seconds_for"), where);
   s.timeout_seconds = positive_number(*spec, "timeout_seconds", where);
   const auto entries = array_items(member(*spec, "curves", where), where + " curves");
   for (std::size_t i = 0; i < entries.size(); ++i)

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ struct Sweep {
   std::vector<std::uint64_t> seeds;
   double min_time = 0;         // seconds Google Benchmark repeats each key for, at least
   double budget_seconds = 0;   // a key predicted to take longer than this (one call) is skipped
+  // Budgets of single algorithms in place of budget_seconds ("budget_seconds_for": {"name": seconds}),
+  // for the few whose curves need sizes past the common budget.
+  std::map<std::string, double> budget_seconds_for;
   double timeout_seconds = 0;  // a key still running after this long is stopped and recorded skipped
 
   struct Curve {
