@@ -672,12 +672,25 @@ RowWitnesses check_rows(const Polygon& p, const std::string& where) {
   return seen;
 }
 
+// A box with four slits whose reflex tips g = (-4, -4), m = (6, -4), h = (16, 3), q = (-4, 4) (notches
+// 0, 1, 2, 3) admit loose X4-patterns in W's pairing of the interval (0, 2) only with z_g X and z_m Y on
+// the extensions of g's edge from (-10, -10) and of m's from (0, -10), which are parallel (direction
+// (1, 1)); e.g. X = (0, 0) joining q and g, Y = (10, 0) joining m and h. So only the scan's pass for
+// inner rays parallel to G finds them (P2 is a constant there). The other rays fail: the extension of
+// g's other edge points up and left, away from both rays of q; Y on the extension of m's other edge
+// (from (24, -10)) leaves an angle above 180 degrees at Y. Dropping that pass makes the row (0, 2) miss
+// its entry at q = 3 (checked).
+Polygon parallel_slits() {
+  return Polygon::make(std::vector<Point>{{-20, -10}, {-10, -10}, {-4, -4}, {-2, -10}, {0, -10}, {6, -4}, {24, -10}, {30, -10},
+                                          {30, 10}, {16, 3}, {30, 12}, {30, 14}, {-10, 14}, {-4, 4}, {-14, 14}, {-20, 14}});
+}
+
 // Every entry of E and W on small polygons of every family (each also rotated by a third of its
-// vertices), every rotation of x4-quads (both pairings) and jittered x4-quads with crossing rays and
-// spikes: a scan that dropped a loose X4 where a Y-pattern or a split reaches the same S would keep the
-// piece counts the tests above compare, and fail here. Not reached: an entry that only the scan's pass
-// for M parallel to G finds; dropping that pass fails nothing here (nor on 4,800 jittered quads, m = 1
-// to 3, seeds 1 to 400, tried while writing this).
+// vertices), every rotation of x4-quads (both pairings), jittered x4-quads with crossing rays and
+// spikes, and every rotation of parallel_slits(): a scan that dropped a loose X4 where a Y-pattern or a
+// split reaches the same S would keep the piece counts the tests above compare, and fail here. No
+// generated polygon needs the scan's pass for M parallel to G (none of 4,800 jittered quads, m = 1 to
+// 3, seeds 1 to 400, did); parallel_slits() does.
 TEST(ChazelleDobkinTables, RowsHoldExactlyTheLooseX4OfTightInnerNotches) {
   std::vector<std::pair<Polygon, std::string>> polygons;
   for (const Family& f : families())
@@ -695,6 +708,9 @@ TEST(ChazelleDobkinTables, RowsHoldExactlyTheLooseX4OfTightInnerNotches) {
     for (std::size_t by = 0; by < p.size(); ++by)
       polygons.emplace_back(rotated(p, by), "x4-quads m=" + std::to_string(m) + " rotated " + std::to_string(by));
   }
+  const Polygon parallel = parallel_slits();
+  for (std::size_t by = 0; by < parallel.size(); ++by)
+    polygons.emplace_back(rotated(parallel, by), "parallel slits rotated " + std::to_string(by));
   for (int m : {1, 2})
     for (std::uint64_t seed = 1; seed <= 15; ++seed)
       for (bool spike : {false, true})
