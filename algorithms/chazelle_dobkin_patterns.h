@@ -105,7 +105,7 @@ struct AdaptedNotch {
 struct Joint {
   std::size_t notch = 0;
   QPoint lower, upper;
-  mutable std::optional<QPoint> lower_reach, upper_reach;
+  mutable std::optional<QPoint> lower_reach{}, upper_reach{};
 };
 
 class Patterns {
