@@ -120,8 +120,11 @@ Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segment
 // For each other notch w: the vertex through which notch `from`'s view passes across w's boundary
 // position. `visible` is in counter-clockwise order from the notch, so the boundary points the notch
 // sees, in boundary order, sweep counter-clockwise around it: the last vertex x seen up to w and the
-// first y seen from w on bound the hidden stretch that holds w (when w itself is not seen), and the
-// window over it lies on the ray through x when the boundary turns away behind x, else through y.
+// first y seen from w on bound the stretch that holds w (when w itself is not seen). Between x and y
+// the notch sees part of one edge: the boundary before that edge lies behind the window on the ray
+// through x, the boundary after it behind the window through y. (Usually the edge starts at x or
+// ends at y and only one of them is a window; when the notch looks between x and y onto a farther
+// edge, both are.)
 void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible) {
   const std::size_t n = p_.size(), r = notches_.size();
   const VertexId v = notches_[from];
@@ -134,8 +137,8 @@ void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint
     const VertexId x = *(after_w - 1);
     VertexId through = x;
     if (x != w) {
-      const VertexId y = *after_w;
-      if (orient(p_[v], p_[x], p_[p_.next(x)]) > 0) through = y;
+      const VertexId seen = seen_edge_[from][static_cast<std::size_t>(after_w - visible.begin()) - 1];
+      if (offset(w) > offset(seen)) through = *after_w;
     }
     transition_[from * r + k] = through;
     const bool adjacent = offset(w) == 1 || offset(w) == n - 1;
