@@ -304,17 +304,18 @@ QPoint Patterns::reach_along(std::size_t k, const Vec& d) {
 }
 
 // The ray from notch k along d passes through its visible vertex visible_[k][i]. Where it goes on into
-// P's interior, the boundary at that vertex lies on one side of the ray, and beyond the vertex the ray
-// meets the edge the notch sees next to it on the other side, unless it meets a vertex there.
+// P's interior, the edges at that vertex lie on one side of the ray (both d and the way back to the
+// notch point into P's angle there), and beyond the vertex the ray meets the edge the notch sees next
+// to it on the other side, unless it meets a vertex there.
 QPoint Patterns::past_visible(std::size_t k, std::size_t i, const Vec& d) {
   const std::vector<std::uint32_t>& visible = visible_[k];
   const VertexId x = visible[i];
   if (!into_interior(x, d)) return follow(x, d);
   const QPoint& o = notch_point(k);
-  const int behind = orient(o, at(x), at(prev(x))), ahead = orient(o, at(x), at(next(x)));
-  const int side = behind != 0 ? behind : ahead;
+  const int behind = orient(o, at(x), at(prev(x)));
+  const int side = behind != 0 ? behind : orient(o, at(x), at(next(x)));
   const bool free_clockwise = side > 0 && i > 0, free_counter_clockwise = side < 0 && i + 1 < visible.size();
-  if (behind * ahead >= 0 && (free_clockwise || free_counter_clockwise))
+  if (free_clockwise || free_counter_clockwise)
     if (const auto hit = on_seen_edge(o, d, seen_edge_[k][free_clockwise ? i - 1 : i])) return *hit;
   return follow(x, d);
 }
