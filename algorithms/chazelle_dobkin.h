@@ -49,7 +49,8 @@
 // and sides, O(r) bare arms, one arm per subtree) is computed once, O(log n) (in general position;
 // chazelle_dobkin_patterns.h); then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each
 // O(1) (Theorems 13 and 14): O(n log n + n r + r^2 log n + r^3), plus STEP 5's naive completion,
-// O(n r). Space O(r^2) subproblems and rays plus O(n r) for the visibility kept from each notch.
+// O(n r). Space O(r^2) subproblems, subtree joints and rays, plus O(n r) for the visibility kept
+// from each notch.
 // Output: exactly r + 1 - S(0, r-1) convex pieces; Steiner points exact.
 #pragma once
 
@@ -57,6 +58,7 @@
 #include "algorithms/naive.h"
 
 #include <array>
+#include <deque>
 #include <initializer_list>
 #include <optional>
 #include <stdexcept>
@@ -108,9 +110,9 @@ class Program {
         ++subproblems_;
         best_[at(i, j)] = step3(i, j);
         b_[at(i, j)] = step4_b(i, j);
-        if (B(i, j).how != Hang::Bare) b_joint_[at(i, j)] = patterns_.joint(with_b(i, j));
+        if (B(i, j).how != Hang::Bare) b_joint_[at(i, j)] = keep(patterns_.joint(with_b(i, j)));
         f_[at(i, j)] = step4_f(i, j);
-        if (F(i, j).how != Hang::Bare) f_joint_[at(i, j)] = patterns_.joint(with_f(i, j));
+        if (F(i, j).how != Hang::Bare) f_joint_[at(i, j)] = keep(patterns_.joint(with_f(i, j)));
       }
     Decomposition d;
     used_.assign(r_, 0);
@@ -161,10 +163,14 @@ class Program {
   }
   // Their joints, computed once per subtree (the program asks for them O(r^3) times).
   const Joint& joint_b(int i, int j) const {
-    return i < j && B(i, j).how != Hang::Bare ? b_joint_[at(i, j)] : patterns_.bare_joint(i);
+    return i < j && B(i, j).how != Hang::Bare ? joints_[b_joint_[at(i, j)]] : patterns_.bare_joint(i);
   }
   const Joint& joint_f(int i, int j) const {
-    return i < j && F(i, j).how != Hang::Bare ? f_joint_[at(i, j)] : patterns_.bare_joint(j);
+    return i < j && F(i, j).how != Hang::Bare ? joints_[f_joint_[at(i, j)]] : patterns_.bare_joint(j);
+  }
+  std::size_t keep(Joint joint) {
+    joints_.push_back(std::move(joint));
+    return joints_.size() - 1;
   }
 
   // STEPs 2 and 3.
@@ -327,7 +333,9 @@ class Program {
   int r_;
   std::vector<Best> best_;
   std::vector<Subtree> b_, f_;
-  std::vector<Joint> b_joint_, f_joint_;  // the joints at the notches adapted to the non-bare subtrees
+  // The joints at the notches adapted to the non-bare subtrees, and where each interval's are.
+  std::deque<Joint> joints_;
+  std::vector<std::size_t> b_joint_, f_joint_;
   std::vector<char> used_;
   std::int64_t subproblems_ = 0, y_found_ = 0, emitted_patterns_ = 0;
 };
