@@ -45,12 +45,9 @@
 // preprocessing O(n log n + n r) in place of O(n + r^2 log n).
 //
 // Time, apart from x4_term: O(n log n + n r + r^2 log n) preprocessing; the joint of each of the O(r^2)
-// stored subtrees is built once, and the reach of each ray that bounds an X3 region (O(r^2) views
-// and sides, O(r) bare arms, one arm per subtree) is computed once, O(log n) (in general position;
-// chazelle_dobkin_patterns.h); then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each
-// O(1) (Theorems 13 and 14): O(n log n + n r + r^2 log n + r^3), plus STEP 5's naive completion,
-// O(n r). Space O(r^2) subproblems, subtree joints and rays, plus O(n r) for the visibility kept
-// from each notch.
+// stored subtrees is built once; then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each
+// O(1) (Theorems 13 and 14, chazelle_dobkin_patterns.h): O(n log n + n r + r^3), plus STEP 5's naive
+// completion, O(n r). Space O(r^2) subproblems and subtree joints, plus O(n).
 // Output: exactly r + 1 - S(0, r-1) convex pieces; Steiner points exact.
 #pragma once
 

@@ -101,20 +101,19 @@ Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segment
   const std::size_t r = notches_.size();
   sees_notch_.assign(r * r, 0);
   transition_.assign(r * r, 0);
-  transition_reach_.assign(r * r, std::nullopt);
-  side_reach_.assign(r * r, std::nullopt);
   tip_known_.assign(r * r, 0);
   tip_.assign(r * r, std::nullopt);
+  compute_bare_cones();
   if (r == 0) return;
   const VisibilityGraph visibility(p);
-  visible_.resize(r);
-  seen_edge_.resize(r);
+  std::vector<std::uint32_t> visible, seen;
   std::int64_t triangles = 0;
   for (std::size_t i = 0; i < r; ++i) {
-    visibility.visible_from(notches_[i], visible_[i], triangles, &seen_edge_[i]);
-    compute_transitions(i, visible_[i]);
+    visible.clear();
+    seen.clear();
+    visibility.visible_from(notches_[i], visible, triangles, &seen);
+    compute_transitions(i, visible, seen);
   }
-  compute_bare_cones();
 }
 
 // For each other notch w: the vertex through which notch `from`'s view passes across w's boundary
@@ -125,7 +124,8 @@ Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segment
 // through x, the boundary after it behind the window through y. (Usually the edge starts at x or
 // ends at y and only one of them is a window; when the notch looks between x and y onto a farther
 // edge, both are.)
-void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible) {
+void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible,
+                                   const std::vector<std::uint32_t>& seen) {
   const std::size_t n = p_.size(), r = notches_.size();
   const VertexId v = notches_[from];
   auto offset = [&](std::size_t u) { return (u + n - v) % n; };
@@ -137,8 +137,8 @@ void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint
     const VertexId x = *(after_w - 1);
     VertexId through = x;
     if (x != w) {
-      const VertexId seen = seen_edge_[from][static_cast<std::size_t>(after_w - visible.begin()) - 1];
-      if (offset(w) > offset(seen)) through = *after_w;
+      const VertexId edge = seen[static_cast<std::size_t>(after_w - visible.begin()) - 1];
+      if (offset(w) > offset(edge)) through = *after_w;
     }
     transition_[from * r + k] = through;
     const bool adjacent = offset(w) == 1 || offset(w) == n - 1;
@@ -215,172 +215,11 @@ std::vector<QPoint> Patterns::x3_region(const std::array<const Joint*, 3>& joint
   return region;
 }
 
-// The region's two bounding rays at notch n: the lower one turned furthest of the cone's lower arm, the
-// view across the notch ahead and the triangle's side towards it; the upper one likewise, turned least.
-// The region lies less than 180 degrees counter-clockwise of each lower ray and clockwise of each
-// upper one, so one orientation compares two of them (the triangle's side may point out of P's angle
-// at the notch, so the angle from the notch's edge would not).
-std::array<Patterns::Bound, 2> Patterns::bounds(const Joint& n, std::size_t ahead, std::size_t behind) {
-  const QPoint& v = notch_point(n.notch);
-  const std::size_t r = notches_.size();
-  const QPoint &low_view = at(transition(n.notch, ahead)), &high_view = at(transition(n.notch, behind));
-  const std::array<std::pair<const QPoint*, std::optional<QPoint>*>, 3> lows{
-      {{&n.lower, &n.lower_reach},
-       {&low_view, &transition_reach_[n.notch * r + ahead]},
-       {&notch_point(ahead), &side_reach_[n.notch * r + ahead]}}};
-  const std::array<std::pair<const QPoint*, std::optional<QPoint>*>, 3> highs{
-      {{&n.upper, &n.upper_reach},
-       {&high_view, &transition_reach_[n.notch * r + behind]},
-       {&notch_point(behind), &side_reach_[n.notch * r + behind]}}};
-  auto low = lows[0], high = highs[0];
-  for (const auto& b : lows)
-    if (orient(v, *low.first, *b.first) > 0) low = b;
-  for (const auto& b : highs)
-    if (orient(v, *b.first, *high.first) > 0) high = b;
-  return {Bound{low.first, &memo_reach(*low.second, n.notch, *low.first)},
-          Bound{high.first, &memo_reach(*high.second, n.notch, *high.first)}};
-}
-
-// The reach of the ray from notch `from` through `through`, computed on the first call.
-const QPoint& Patterns::memo_reach(std::optional<QPoint>& slot, std::size_t from, const QPoint& through) {
-  if (!slot) slot = reach(from, through);
-  return *slot;
-}
-
-// Condition 3 of Theorem 14 (C, A and B well defined, i.e. Q lies in P): Q's edge from each notch runs
-// along the notch's bounding ray to the corner where it meets the neighbouring notch's ray; the edge lies
-// in the closed P exactly when the corner is no farther along the ray than its reach. Q's boundary then
-// lies in P, so Q does, and every point of the region's interior (the interior of Q's kernel) sees the
-// three notches through Q's interior.
-bool Patterns::q_inside(const std::array<const Joint*, 3>& joints) {
-  std::array<std::array<Bound, 2>, 3> bound;
-  for (std::size_t k = 0; k < 3; ++k)
-    bound[k] = bounds(*joints[k], joints[(k + 1) % 3]->notch, joints[(k + 2) % 3]->notch);
-  for (std::size_t k = 0; k < 3; ++k) {
-    const std::size_t w = (k + 1) % 3;
-    const QPoint &a = notch_point(joints[k]->notch), &b = notch_point(joints[w]->notch);
-    const Bound &from_a = bound[k][0], &from_b = bound[w][1];
-    const Vec da = *from_a.through - a, db = *from_b.through - b, ab = b - a;
-    const Rational reach_a = dot(*from_a.reach - a, da), reach_b = dot(*from_b.reach - b, db);
-    const Rational den = cross(da, db);
-    // Both rays along ab (a positive area region leaves no other parallel case): Q's edge is ab.
-    if (den == 0) {
-      if (dot(ab, da) > reach_a) return false;
-      continue;
-    }
-    // The corner a + s da = b + t db.
-    const Rational s = cross(ab, db) / den, t = cross(ab, da) / den;
-    if (s * dot(da, da) > reach_a || t * dot(db, db) > reach_b) return false;
-  }
-  return true;
-}
-
-// Condition 3 decides whether the chosen point of the region is the pattern's Steiner point.
-std::optional<QPoint> Patterns::found(const QPoint& s, const std::array<const Joint*, 3>& joints) {
-  if (!q_inside(joints)) return std::nullopt;
+// The region's point is the Steiner point: condition 3 of Theorem 14 follows from the views that
+// bound the region (see the header comment).
+std::optional<QPoint> Patterns::found(const QPoint& s) {
   ++x3_found_;
   return s;
-}
-
-QPoint Patterns::reach(std::size_t notch, const QPoint& through) {
-  ++reach_rays_;
-  return reach_along(notch, through - notch_point(notch));
-}
-
-// Where the ray from notch k in direction d leaves P. Its visible vertices are sorted by angle from its
-// forward edge; between two consecutive ones the ray meets the one edge seen there, inside it.
-QPoint Patterns::reach_along(std::size_t k, const Vec& d) {
-  const VertexId v = notches_[k];
-  const QPoint& o = at(v);
-  const Vec reference = at(next(v)) - o;
-  const std::vector<std::uint32_t>& visible = visible_[k];
-  const auto it = std::partition_point(visible.begin(), visible.end(),
-                                       [&](std::uint32_t u) { return turns_before(reference, at(u) - o, d); });
-  if (it == visible.end()) return o;  // d leaves the notch's angle
-  const std::size_t i = static_cast<std::size_t>(it - visible.begin());
-  if (cross(at(*it) - o, d) == 0) return past_visible(k, i, d);
-  if (const auto hit = on_seen_edge(o, d, seen_edge_[k][i - 1])) return *hit;
-  return follow(v, d);
-}
-
-// The ray from notch k along d passes through its visible vertex visible_[k][i]. Where it goes on into
-// P's interior, the edges at that vertex lie on one side of the ray (both d and the way back to the
-// notch point into P's angle there), and beyond the vertex the ray meets the edge the notch sees next
-// to it on the other side, unless it meets a vertex there.
-QPoint Patterns::past_visible(std::size_t k, std::size_t i, const Vec& d) {
-  const std::vector<std::uint32_t>& visible = visible_[k];
-  const VertexId x = visible[i];
-  if (!into_interior(x, d)) return follow(x, d);
-  const QPoint& o = notch_point(k);
-  const int behind = orient(o, at(x), at(prev(x)));
-  const int side = behind != 0 ? behind : orient(o, at(x), at(next(x)));
-  const bool free_clockwise = side > 0 && i > 0, free_counter_clockwise = side < 0 && i + 1 < visible.size();
-  if (free_clockwise || free_counter_clockwise)
-    if (const auto hit = on_seen_edge(o, d, seen_edge_[k][free_clockwise ? i - 1 : i])) return *hit;
-  return follow(x, d);
-}
-
-// Where the ray from o along d crosses the edge from `edge` to its successor, if it does inside it.
-std::optional<QPoint> Patterns::on_seen_edge(const QPoint& o, const Vec& d, VertexId edge) const {
-  const QPoint &e0 = at(edge), &e1 = at(next(edge));
-  const Rational c0 = cross(d, e0 - o), c1 = cross(d, e1 - o);
-  if (c0 == 0 || c1 == 0 || (c0 > 0) == (c1 > 0)) return std::nullopt;
-  const Rational t = c0 / (c0 - c1);
-  const QPoint hit(e0.x() + t * (e1.x() - e0.x()), e0.y() + t * (e1.y() - e0.y()));
-  if (dot(hit - o, d) <= 0) return std::nullopt;
-  return hit;
-}
-
-// Whether direction d at vertex z points strictly into P's interior angle there.
-bool Patterns::into_interior(VertexId z, const Vec& d) const {
-  const Vec f = at(next(z)) - at(z), b = at(prev(z)) - at(z);
-  const bool along_f = cross(f, d) == 0 && dot(f, d) > 0;
-  return !along_f && turns_before(f, d, b);
-}
-
-// The ray along d that has reached vertex z of P, in degenerate position: it runs on along an edge
-// that continues it, stops where it leaves P's angle, and otherwise crosses P's interior to the next
-// boundary point, found by a scan of all edges (O(n), counted in reach_scans).
-QPoint Patterns::follow(VertexId z, const Vec& d) {
-  for (;;) {
-    const QPoint& o = at(z);
-    const Vec f = at(next(z)) - o, b = at(prev(z)) - o;
-    if (cross(f, d) == 0 && dot(f, d) > 0) {
-      z = next(z);
-    } else if (cross(b, d) == 0 && dot(b, d) > 0) {
-      z = prev(z);
-    } else if (!into_interior(z, d)) {
-      return o;
-    } else {
-      ++reach_scans_;
-      Contact c = first_contact(z, d);
-      if (!c.vertex) return c.point;
-      z = *c.vertex;
-    }
-  }
-}
-
-// The first point of P's boundary beyond vertex z on the ray along d: a vertex, or a point inside an edge.
-Patterns::Contact Patterns::first_contact(VertexId z, const Vec& d) const {
-  const QPoint& o = at(z);
-  std::optional<Rational> nearest;
-  Contact best{o, std::nullopt};
-  auto offer = [&](const QPoint& q, std::optional<VertexId> vertex) {
-    const Rational t = dot(q - o, d);
-    if (t > 0 && (!nearest || t < *nearest)) nearest = t, best = {q, vertex};
-  };
-  for (VertexId u = 0; u < exact_.size(); ++u) {
-    const VertexId w = next(u);
-    if (u == z || w == z) continue;
-    const Rational cu = cross(d, at(u) - o), cw = cross(d, at(w) - o);
-    if (cu == 0) offer(at(u), u);
-    if (cw == 0) offer(at(w), w);
-    if (cu != 0 && cw != 0 && (cu > 0) != (cw > 0)) {
-      const Rational t = cu / (cu - cw);
-      offer(QPoint(at(u).x() + t * (at(w).x() - at(u).x()), at(u).y() + t * (at(w).y() - at(u).y())), std::nullopt);
-    }
-  }
-  return best;
 }
 
 std::optional<QPoint> Patterns::x3(const Joint& a, const Joint& b, const Joint& c) {
@@ -388,8 +227,7 @@ std::optional<QPoint> Patterns::x3(const Joint& a, const Joint& b, const Joint& 
   const std::array<const Joint*, 3> joints{&a, &b, &c};
   const std::vector<QPoint> region = x3_region(joints);
   if (region.empty()) return std::nullopt;
-  ++x3_candidates_;
-  return found(average(region), joints);
+  return found(average(region));
 }
 
 std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const Joint& c, bool counter_clockwise) {
@@ -397,7 +235,6 @@ std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const
   const std::array<const Joint*, 3> joints{&a, &b, &c};
   const std::vector<QPoint> region = x3_region(joints);
   if (region.empty()) return std::nullopt;
-  ++x3_candidates_;
   const QPoint& v = notch_point(a.notch);
   const QPoint* best = &region[0];
   for (const QPoint& q : region) {
@@ -406,7 +243,7 @@ std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const
   }
   const QPoint mid = average(region);
   const QPoint s(best->x() + (mid.x() - best->x()) / 64, best->y() + (mid.y() - best->y()) / 64);
-  return found(s, joints);
+  return found(s);
 }
 
 // The tip of Q facing the chain from notch a counter-clockwise to notch b (Theorem 15's reductions
@@ -477,15 +314,12 @@ void Patterns::report(Counters& counters) const {
   counters["x2_tests"] += x2_tests_;
   counters["x2_found"] += x2_found_;
   counters["x3_tests"] += x3_tests_;
-  counters["x3_candidates"] += x3_candidates_;
   counters["x3_found"] += x3_found_;
   counters["x4_tests"] += x4_tests_;
   counters["x4_found"] += x4_found_;
   counters["tips"] += tips_;
   counters["tips_found"] += tips_found_;
   counters["segment_search_steps"] += segments_.steps();
-  counters["reach_rays"] += reach_rays_;
-  counters["reach_scans"] += reach_scans_;
 }
 
 }  // namespace pd::cd

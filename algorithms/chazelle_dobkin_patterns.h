@@ -33,34 +33,21 @@
 //     becomes the open range cone of each (adapted) notch and the open triangle abc: a further seven
 //     half-planes. S is taken as the average of the vertices of this convex region (exact rationals),
 //     which lies in its interior whenever the region has positive area.
-//   - Condition 3 (C, A and B lie on the segments R(.,.), i.e. Q lies in P), for the triples that
-//     pass the half-planes, in O(1) as Theorem 14 has it: at each notch the region is bounded by two
-//     rays, each the one turned furthest in of the cone's arm, the view and the triangle's side, and
-//     Q's edge from the notch runs along its ray to the corner where it meets the neighbouring notch's
-//     ray. Q lies in P iff its six edges do, i.e. iff no corner is farther along its ray than the
-//     ray's reach (`reach`: where the ray leaves the closed P; passing through a vertex of P where the
-//     boundary stays on one side does not stop it). Each ray's reach is computed once: by binary
-//     search among the notch's visible vertices, kept with the edge seen between each two consecutive
-//     ones (algorithms/visibility.h), O(log n). The rays are the O(r^2) views and sides, the bare
-//     notches' arms and one arm per stored subtree (Corollary 14: Y-subtrees are patched "in constant
-//     time only if R(v_l, t_l) ... have been precomputed"), so O(r^2 log n) in all. By the
-//     sufficiency half of Theorem 14, when Q lies in P every kernel point is a Steiner point (it sees
-//     each notch through Q's interior); by the necessity half, none is otherwise.
-//     This replaces a check of the chosen point's three edges against the boundary's convex chains,
-//     O(r log(n/r)) per candidate; both were run on every candidate of both programs on 3,530
-//     polygons and of every triple of bare notches and branches of 2,080 more, and agreed on each.
-//     None failed condition 3, and none can, given the views: let S be in the region and p the first
-//     boundary point on aS before S. The direction aS lies strictly between a's views across b and
-//     across c, so p lies on the chain b..c, neither b nor c. The chord ap cuts P into D (bounded by
-//     ap, the chain from b to p and the chain a..b) and D' (ap, the chain from p to c and c..a). b's
-//     ray towards S starts into D and cannot cross ap (its line meets aS only at S); the first
-//     boundary point it meets is on c..a (b's view), which D's boundary touches only at a; so it
-//     reaches S, and S is in D. Likewise c puts S in D', which is disjoint from D. So a sees S, as do b
-//     and c, and Q lies in P (a Steiner point's edges keep Q's edges in P: Theorem 14's necessity
-//     half). The test is kept, now at O(1), because Theorem 14 states it and this argument rests on
-//     our reconstruction of the views.
-//     Degenerate position: a ray that meets further vertices of P exactly is followed past each by a
-//     scan of the boundary, O(n) (counter reach_scans), so O(log n) per ray holds in general position.
+//   - Condition 3 (C, A and B lie on the segments R(.,.), i.e. Q lies in P) needs no test of its own:
+//     with the views above it holds at every point S of the region. Suppose aS met P's boundary before
+//     S, first at p. The direction aS lies strictly between a's views across b and across c, so p lies
+//     on the chain b..c, neither b nor c. The chord ap cuts P into D (bounded by ap, the chain from b
+//     to p and the chain a..b) and D' (ap, the chain from p to c and c..a). b's segment towards S
+//     starts into D and cannot cross ap (its line meets aS only at S, beyond p); the first boundary
+//     point it could meet is on c..a (b's views), which D's boundary touches only at a, off the
+//     segment (S lies in the open triangle); so it reaches S inside D. Likewise c's puts S in D', and
+//     D and D' meet only on ap: a contradiction. So a sees S, and b and c likewise, and S, in the
+//     joints' cones and the open triangle, is a Steiner point. The thesis tests condition 3 in O(1)
+//     on segments precomputed from the superranges; here nothing is left to test, and an X3 test is
+//     the half-planes alone, O(1). (Checked while writing this against a test of S's three edges
+//     against the boundary: every candidate of both programs on 3,530 polygons, 20,405 candidates,
+//     and every triple of bare notches and branches on 2,080 polygons, 872,436 candidates, collinear
+//     vertices included; no edge failed.)
 //   - Steiner points whose region has no interior (patterns that exist only in degenerate position,
 //     an edge through a vertex of P or exactly along a window) are not reported.
 //   - Corollary 14.2 (a subtree's Steiner point chosen to turn its edge at z_i as far as possible):
@@ -76,10 +63,10 @@
 //     notch (the pattern then reduces to a Y-pattern, found as such).
 // Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains) are replaced by the
 // visibility of every vertex from each notch (algorithms/visibility.h, O(n) per notch after an
-// O(n log n) triangulation): the transitions are read from it by binary search, O(r^2 log n) in all,
-// and the reaches as above. So the preprocessing is O(n log n + n r) time and the visible vertices
-// kept take O(n r) space, where the thesis has O(n + r^2 log n); every test after it costs what
-// Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the boundary in X4's tips and tests).
+// O(n log n) triangulation): the transitions are read from it by binary search, O(r^2 log n) in all.
+// So the preprocessing is O(n log n + n r) where the thesis has O(n + r^2 log n); every test after it
+// costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the boundary in X4's
+// tips and tests).
 //
 // Exact: every test is an orientation on exact rationals; Steiner points are exact rationals.
 #pragma once
@@ -107,13 +94,9 @@ struct AdaptedNotch {
 
 // The directions allowed at a notch for its edge to a Steiner point: the open cone of the X with
 // orient(v, lower, X) > 0 and orient(v, upper, X) < 0, less than 180 degrees wide (or a half-plane).
-// Each arm has a reach: where the ray from the notch along the arm leaves P (the far end of the longest
-// segment from the notch along it that lies in the closed P), for condition 3 of Theorem 14. It is
-// computed by the first X3 test that needs it and kept with the joint.
 struct Joint {
-  std::size_t notch = 0;
+  std::size_t notch;
   QPoint lower, upper;
-  mutable std::optional<QPoint> lower_reach{}, upper_reach{};
 };
 
 class Patterns {
@@ -153,9 +136,7 @@ class Patterns {
 
   // Theorem 14 on joints a, b, c at distinct notches in counter-clockwise boundary order: a Steiner
   // point S such that Sa, Sb, Sc lie in P, leave S without a reflex angle and each lies in its joint's
-  // cone; or nothing. O(1), apart from computing, once per ray, the reaches of the rays that bound the
-  // region (O(log n) each; see the header comment). `x3` returns the average of the
-  // region's vertices; `x3_extreme` the point of the region turned furthest around a (counter-clockwise
+  // cone; or nothing. O(1) (see the header comment). `x3` returns the average of the region's vertices; `x3_extreme` the point of the region turned furthest around a (counter-clockwise
   // when `counter_clockwise`), moved 1/64 of the way towards that average so that it is interior
   // (Corollary 14.2; see the header comment).
   std::optional<QPoint> x3(const Joint& a, const Joint& b, const Joint& c);
@@ -172,67 +153,36 @@ class Patterns {
   // the first time, O(1) after.
   bool has_tip(std::size_t a, std::size_t b) { return tip(a, b).has_value(); }
 
-  // Where the ray from a notch through `through` leaves P: the far end of the longest segment from the
-  // notch along the ray that lies in the closed P (the notch itself when the ray starts outside P's
-  // angle there). Passing through a vertex where the boundary stays on one side does not stop it.
-  // O(log n) by binary search in the notch's visible vertices; O(n) per further vertex of P that the
-  // ray meets in degenerate position (counted in reach_scans).
-  QPoint reach(std::size_t notch, const QPoint& through);
-
   // Whether the open segment from polygon vertex v to point s lies in P's interior, s included.
   // O(r log(n/r)).
   bool sees(VertexId v, const QPoint& s) const;
   // Whether the closed segment st, between interior points, avoids P's boundary. O(r log(n/r)).
   bool inside(const QPoint& s, const QPoint& t) const;
 
-  // Counts "x2_tests", "x2_found", "x3_tests", "x3_candidates" (past the half-planes), "x3_found",
-  // "x4_tests", "x4_found", "tips" (computed), "tips_found" (that exist), "segment_search_steps"
-  // (binary-search steps and edges tested by sees and inside), "reach_rays" (reaches computed) and
-  // "reach_scans" (rays followed past a vertex of P by a scan of the boundary, degenerate position).
+  // Counts "x2_tests", "x2_found", "x3_tests", "x3_found", "x4_tests", "x4_found", "tips" (computed),
+  // "tips_found" (that exist), "segment_search_steps" (binary-search steps and edges tested by sees
+  // and inside).
   void report(Counters& counters) const;
 
  private:
-  using Vec = ExactKernel::Vector_2;
-  // One side of the region at a notch: the ray from the notch through `through`, and its reach.
-  struct Bound {
-    const QPoint* through;
-    const QPoint* reach;
-  };
-  // Where the ray leaves P: an interior point of an edge, or a vertex of P to follow it past.
-  struct Contact {
-    QPoint point;
-    std::optional<VertexId> vertex;
-  };
-
   const QPoint& at(VertexId v) const { return exact_[v]; }
   VertexId next(VertexId v) const { return static_cast<VertexId>(p_.next(v)); }
   VertexId prev(VertexId v) const { return static_cast<VertexId>(p_.prev(v)); }
   VertexId transition(std::size_t from, std::size_t towards) const {
     return transition_[from * notches_.size() + towards];
   }
-  void compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible);
+  void compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible,
+                           const std::vector<std::uint32_t>& seen);
   void compute_bare_cones();
   Joint cone(const AdaptedNotch& a) const;
   std::vector<QPoint> x3_region(const std::array<const Joint*, 3>& joints) const;
-  bool q_inside(const std::array<const Joint*, 3>& joints);
-  std::array<Bound, 2> bounds(const Joint& n, std::size_t ahead, std::size_t behind);
-  const QPoint& memo_reach(std::optional<QPoint>& slot, std::size_t from, const QPoint& through);
-  QPoint reach_along(std::size_t notch, const Vec& d);
-  QPoint past_visible(std::size_t notch, std::size_t i, const Vec& d);
-  std::optional<QPoint> on_seen_edge(const QPoint& o, const Vec& d, VertexId edge) const;
-  bool into_interior(VertexId z, const Vec& d) const;
-  QPoint follow(VertexId z, const Vec& d);
-  Contact first_contact(VertexId z, const Vec& d) const;
-  std::optional<QPoint> found(const QPoint& s, const std::array<const Joint*, 3>& joints);
+  std::optional<QPoint> found(const QPoint& s);
   const std::optional<QPoint>& tip(std::size_t a, std::size_t b);
 
   const Polygon& p_;
   std::vector<QPoint> exact_;
   mutable boundary::SegmentSearch segments_;  // P's boundary in convex chains, for sees and inside
   std::vector<VertexId> notches_;
-  // Per notch: the vertices it sees, counter-clockwise, and the edge it sees between each two
-  // consecutive ones (algorithms/visibility.h), kept for the reaches.
-  std::vector<std::vector<std::uint32_t>> visible_, seen_edge_;
   // Per notch: the bare notch, its joint and its two branches.
   std::vector<AdaptedNotch> bare_;
   std::vector<Joint> bare_joint_, forward_branch_, backward_branch_;
@@ -240,14 +190,11 @@ class Patterns {
   // notch i's view passes across notch j's boundary position (see the header comment).
   std::vector<char> sees_notch_;
   std::vector<VertexId> transition_;
-  // r x r, filled on demand: the reaches of the rays from notch i through transition(i, j) and
-  // through notch j.
-  std::vector<std::optional<QPoint>> transition_reach_, side_reach_;
   // r x r, filled on demand: the tip of Q facing the chain from notch a to notch b (Theorem 15).
   std::vector<char> tip_known_;
   std::vector<std::optional<QPoint>> tip_;
-  std::int64_t x2_tests_ = 0, x2_found_ = 0, x3_tests_ = 0, x3_candidates_ = 0, x3_found_ = 0;
-  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0, tips_found_ = 0, reach_rays_ = 0, reach_scans_ = 0;
+  std::int64_t x2_tests_ = 0, x2_found_ = 0, x3_tests_ = 0, x3_found_ = 0;
+  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0, tips_found_ = 0;
 };
 
 }  // namespace pd::cd

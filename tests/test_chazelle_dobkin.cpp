@@ -207,20 +207,6 @@ TEST(ChazelleDobkinPatterns, NoX3MissedOnAGrid) {
   }
 }
 
-// Whether q lies in the closed polygon `ring`: on an edge, or inside by the parity of the edges that
-// cross the horizontal ray to its right (each edge taken half-open in y).
-bool in_closed_polygon(const std::vector<QPoint>& ring, const QPoint& q) {
-  bool inside = false;
-  for (std::size_t e = 0; e < ring.size(); ++e) {
-    const QPoint &a = ring[e], &b = ring[(e + 1) % ring.size()];
-    if (orient(a, b, q) == 0 && std::min(a.x(), b.x()) <= q.x() && q.x() <= std::max(a.x(), b.x()) &&
-        std::min(a.y(), b.y()) <= q.y() && q.y() <= std::max(a.y(), b.y()))
-      return true;
-    if ((a.y() > q.y()) != (b.y() > q.y()) && orient(a, b, q) == (b.y() > a.y() ? 1 : -1)) inside = !inside;
-  }
-  return inside;
-}
-
 // Notch a (the dent in the bottom) looks up a corridor between notches x and y onto the far wall of a
 // room; the notch w in the room's lower left edge comes after that wall in boundary order, so a's view
 // passes across w's position on the ray through y, not through x, though the boundary also turns
@@ -241,81 +227,6 @@ TEST(ChazelleDobkinPatterns, FindsTheX3SeenBetweenTwoWindows) {
   const Validation v = validate(p, d, Kind::Convex, true);
   EXPECT_TRUE(v.ok) << v.reason;
   EXPECT_EQ(pieces_of(p, d).size(), notches.size());
-}
-
-// The reach of a ray (condition 3 of Theorem 14), written out apart from the detector: every
-// parameter where the ray from o through `through` meets P's boundary, and between each two
-// consecutive ones a midpoint inside (or on) P or outside it; the reach is where the first stretch
-// outside begins. `touches` counts the boundary points met before it.
-QPoint brute_reach(const Polygon& p, VertexId v, const QPoint& through, int& touches) {
-  std::vector<QPoint> ring;
-  for (const Point& q : p.vertices()) ring.push_back(to_exact(q));
-  const QPoint o = ring[v];
-  const ExactKernel::Vector_2 d = through - o;
-  auto cross_d = [&](const QPoint& q) -> Rational { return d.x() * (q.y() - o.y()) - d.y() * (q.x() - o.x()); };
-  auto param = [&](const QPoint& q) -> Rational { return ((q - o) * d) / (d * d); };
-  std::vector<Rational> ts{0};
-  for (std::size_t e = 0; e < ring.size(); ++e) {
-    const QPoint &a = ring[e], &b = ring[(e + 1) % ring.size()];
-    const Rational ca = cross_d(a), cb = cross_d(b);
-    if (ca == 0) ts.push_back(param(a));
-    if ((ca > 0 && cb < 0) || (ca < 0 && cb > 0)) ts.push_back(param(a + (ca / (ca - cb)) * (b - a)));
-  }
-  std::sort(ts.begin(), ts.end());
-  ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
-  ts.erase(ts.begin(), std::find(ts.begin(), ts.end(), Rational(0)));
-  touches = 0;
-  for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
-    if (!in_closed_polygon(ring, o + ((ts[i] + ts[i + 1]) / 2) * d)) return o + ts[i] * d;
-    touches += i > 0;
-  }
-  return o + ts.back() * d;
-}
-
-// The polygon with every coordinate doubled and a vertex added in the middle of every other edge:
-// collinear vertices, so rays run along edges and through several vertices in a row.
-Polygon with_midpoints(const Polygon& p) {
-  std::vector<Point> v;
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    const Point &a = p[k], &b = p[p.next(k)];
-    v.emplace_back(2 * a.x(), 2 * a.y());
-    if (k % 2 == 0) v.emplace_back(a.x() + b.x(), a.y() + b.y());
-  }
-  return Polygon::make(v);
-}
-
-// From every notch, rays through every vertex, away from every vertex (the extensions of edges and
-// diagonals beyond the notch) and through the middle of every edge: the reach equals the brute force's.
-// Some rays must pass a boundary point before leaving P (a grazed vertex, or an edge run along).
-TEST(ChazelleDobkinPatterns, ReachOfRaysFromNotchesAsABruteForce) {
-  std::size_t rays = 0, grazing = 0;
-  for (const Sample& s : small_samples())
-    for (const bool collinear : {false, true}) {
-      const Polygon p = collinear ? with_midpoints(make(s)) : make(s);
-      cd::Patterns patterns(p);
-      const auto& notches = patterns.notches();
-      for (std::size_t k = 0; k < notches.size(); ++k) {
-        const QPoint& o = patterns.notch_point(k);
-        std::vector<QPoint> throughs;
-        for (std::size_t u = 0; u < p.size(); ++u) {
-          if (u == notches[k]) continue;
-          const QPoint q = to_exact(p[u]), after = to_exact(p[p.next(u)]);
-          throughs.push_back(q);
-          throughs.push_back(o + (o - q));
-          throughs.push_back(QPoint((q.x() + after.x()) / 2, (q.y() + after.y()) / 2));
-        }
-        for (const QPoint& t : throughs) {
-          if (t == o) continue;
-          int touches = 0;
-          const QPoint expected = brute_reach(p, notches[k], t, touches);
-          EXPECT_EQ(patterns.reach(k, t), expected) << label(s) << (collinear ? " with midpoints" : "") << " notch " << k;
-          ++rays;
-          grazing += touches > 0;
-        }
-      }
-    }
-  EXPECT_GT(rays, 1000u);
-  EXPECT_GT(grazing, 50u);
 }
 
 // ---- the programs (chazelle-dobkin and chazelle-dobkin-n5) ----
