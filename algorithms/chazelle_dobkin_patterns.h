@@ -52,7 +52,7 @@
 //     an edge through a vertex of P or exactly along a window) are not reported.
 //   - Corollary 14.2 (a subtree's Steiner point chosen to turn its edge at z_i as far as possible):
 //     the extreme vertex of the same region, seen from z_i; it lies on the region's boundary, so it
-//     is moved 1/64 of the way towards the region's average, into the interior, before it is checked.
+//     is moved 1/64 of the way towards the region's average, into the interior.
 //   - X4 (Theorem 15): "applying the two reductions ... takes A to the intersection of v_i r_ij and
 //     v_j l_ji": each Steiner point is put at the tip of Q facing the chain between its two notches,
 //     where each notch's edge is turned as far towards that chain as its range, its view across the
