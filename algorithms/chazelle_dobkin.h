@@ -44,17 +44,18 @@
 // Deviation: superranges are replaced by visibility (see chazelle_dobkin_patterns.h), which makes the
 // preprocessing O(n log n + n r) in place of O(n + r^2 log n).
 //
-// Time, apart from x4_term: O(n log n + n r + r^2 log n) preprocessing, then O(r^3) pattern tests
-// (STEPs 2 and 4: O(r) per interval), each O(1) or, past the constant-time tests, O(r log(n/r)) (a
-// segment against the boundary's convex chains): O(n log n + n r + r^4 log(n/r)), plus STEP 5's naive
-// completion, O(n r). Space O(r^2)
-// subproblems plus O(n). Output: exactly r + 1 - S(0, r-1) convex pieces; Steiner points exact.
+// Time, apart from x4_term: O(n log n + n r + r^2 log n) preprocessing; the joint of each of the O(r^2)
+// stored subtrees is built once; then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each
+// O(1) (Theorems 13 and 14, chazelle_dobkin_patterns.h): O(n log n + n r + r^3), plus STEP 5's naive
+// completion, O(n r). Space O(r^2) subproblems and subtree joints, plus O(n).
+// Output: exactly r + 1 - S(0, r-1) convex pieces; Steiner points exact.
 #pragma once
 
 #include "algorithms/chazelle_dobkin_patterns.h"
 #include "algorithms/naive.h"
 
 #include <array>
+#include <deque>
 #include <initializer_list>
 #include <optional>
 #include <stdexcept>
@@ -95,7 +96,8 @@ class Program {
   virtual ~Program() = default;
   explicit Program(const Polygon& p)
       : p_(p), patterns_(p), r_(static_cast<int>(patterns_.notches().size())),
-        best_(static_cast<std::size_t>(r_) * r_), b_(best_.size()), f_(best_.size()) {}
+        best_(static_cast<std::size_t>(r_) * r_), b_(best_.size()), f_(best_.size()), b_joint_(best_.size()),
+        f_joint_(best_.size()) {}
 
   // STEPs 1-5. Throws std::logic_error if the patterns laid out do not add up to S(0, r-1).
   Decomposition run(Counters& counters) {
@@ -105,7 +107,9 @@ class Program {
         ++subproblems_;
         best_[at(i, j)] = step3(i, j);
         b_[at(i, j)] = step4_b(i, j);
+        if (B(i, j).how != Hang::Bare) b_joint_[at(i, j)] = keep(patterns_.joint(with_b(i, j)));
         f_[at(i, j)] = step4_f(i, j);
+        if (F(i, j).how != Hang::Bare) f_joint_[at(i, j)] = keep(patterns_.joint(with_f(i, j)));
       }
     Decomposition d;
     used_.assign(r_, 0);
@@ -154,6 +158,17 @@ class Program {
     if (i < j && F(i, j).how != Hang::Bare) a.backward = F(i, j).far;
     return a;
   }
+  // Their joints, computed once per subtree (the program asks for them O(r^3) times).
+  const Joint& joint_b(int i, int j) const {
+    return i < j && B(i, j).how != Hang::Bare ? joints_[b_joint_[at(i, j)]] : patterns_.bare_joint(i);
+  }
+  const Joint& joint_f(int i, int j) const {
+    return i < j && F(i, j).how != Hang::Bare ? joints_[f_joint_[at(i, j)]] : patterns_.bare_joint(j);
+  }
+  std::size_t keep(Joint joint) {
+    joints_.push_back(std::move(joint));
+    return joints_.size() - 1;
+  }
 
   // STEPs 2 and 3.
   Best step3(int i, int j) {
@@ -174,15 +189,15 @@ class Program {
     for (int k = i + 1; k < j; ++k) {  // Y3: a Steiner point joining z_i, z_k (subtrees ahead) and z_j
       const int count = free_b(i, k - 1) + free_b(k, j - 1) + 1;
       if (count <= best.count) continue;
-      const auto s = patterns_.x3(patterns_.joint(with_b(i, k - 1)), patterns_.joint(with_b(k, j - 1)),
+      const auto s = patterns_.x3(joint_b(i, k - 1), joint_b(k, j - 1),
                                   patterns_.bare_joint(j));
       if (s) ++y_found_, offer(count, {0, Way::Y3, k, 0, false, *s});
     }
     for (int k = i + 1; k < j; ++k) {  // Y4: a Steiner point joining z_i and z_k, z_j (subtrees behind)
       const int count = free_f(i + 1, k) + free_f(k + 1, j) + 1;
       if (count <= best.count) continue;
-      const auto s = patterns_.x3(patterns_.bare_joint(i), patterns_.joint(with_f(i + 1, k)),
-                                  patterns_.joint(with_f(k + 1, j)));
+      const auto s = patterns_.x3(patterns_.bare_joint(i), joint_f(i + 1, k),
+                                  joint_f(k + 1, j));
       if (s) ++y_found_, offer(count, {0, Way::Y4, k, 0, false, *s});
     }
     if (const auto x = x4_term(i, j, best.count)) offer(x->count, {0, Way::X4, x->k, x->l, x->wrapped, x->first, x->second});
@@ -217,8 +232,8 @@ class Program {
     }
     for (int k = i + 1; k < j; ++k) {  // B4
       if (free_f(i + 1, k) + free_f(k + 1, j) != c) continue;
-      const auto s = patterns_.x3_extreme(patterns_.forward_branch(i), patterns_.joint(with_f(i + 1, k)),
-                                          patterns_.joint(with_f(k + 1, j)), true);
+      const auto s = patterns_.x3_extreme(patterns_.forward_branch(i), joint_f(i + 1, k),
+                                          joint_f(k + 1, j), true);
       if (s) offer({Hang::ToSteiner, k, *s});
     }
     return best;
@@ -242,8 +257,8 @@ class Program {
     }
     for (int k = i + 1; k < j; ++k) {  // F4
       if (free_b(i, k - 1) + free_b(k, j - 1) != c) continue;
-      const auto s = patterns_.x3_extreme(patterns_.backward_branch(j), patterns_.joint(with_b(i, k - 1)),
-                                          patterns_.joint(with_b(k, j - 1)), false);
+      const auto s = patterns_.x3_extreme(patterns_.backward_branch(j), joint_b(i, k - 1),
+                                          joint_b(k, j - 1), false);
       if (s) offer({Hang::ToSteiner, k, *s});
     }
     return best;
@@ -315,6 +330,9 @@ class Program {
   int r_;
   std::vector<Best> best_;
   std::vector<Subtree> b_, f_;
+  // The joints at the notches adapted to the non-bare subtrees, and where each interval's are.
+  std::deque<Joint> joints_;
+  std::vector<std::size_t> b_joint_, f_joint_;
   std::vector<char> used_;
   std::int64_t subproblems_ = 0, y_found_ = 0, emitted_patterns_ = 0;
 };

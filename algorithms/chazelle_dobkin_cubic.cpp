@@ -87,15 +87,15 @@
 // - The ordered set (a std::set) makes the scan O(r log r) per interval, not O(r).
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
-//   superranges, Y-pattern tests that check segments against the boundary).
+//   superranges; see chazelle_dobkin_patterns.h).
 //
 // Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists; STEPs 2 and 4
-// O(r^4 log(n/r)) (chazelle_dobkin.h); STEP 3's X4 term O(r^3) lookups; the scans O(r^3 log r) list
-// steps plus the P4 tests, O(r log(n/r)) each, at most one per interval and loose points X, Y, at least
-// one per witness. Worst case (every P4 test failing) O(n log n + n r + r^5 log(n/r)), as
-// chazelle-dobkin-n5; when a walk ends after O(1) tests, O(n log n + n r + r^4 log(n/r)), which is
-// STEPs 2 and 4. Space O(n + r^3) (a row per interval with a witness) plus O(r^2) rationals for the
-// lists. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
+// O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
+// O(r^3) lookups; the scans O(r^3 log r) list steps plus the P4 tests, O(r log(n/r)) each, at most one
+// per interval and loose points X, Y, at least one per witness. Worst case (every P4 test failing)
+// O(n log n + n r + r^5 log(n/r)), as chazelle-dobkin-n5; when a walk ends after O(1) tests,
+// O(n log n + n r + r^3 log r + r^3 log(n/r)) (the scans, and one P4 test per interval). Space
+// O(n + r^3) (a row per interval with a witness) plus O(r^2) rationals for the lists. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
 // convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
 //
 // Counters, besides the program's and the patterns': "x4_loose_points" (pairs of rays meeting inside

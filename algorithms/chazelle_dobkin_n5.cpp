@@ -12,8 +12,9 @@
 // Deviation: superranges are replaced by visibility from each notch (chazelle_dobkin_patterns.h), so
 // the preprocessing is O(n log n + n r) where the thesis has O(n + r^2 log n).
 //
-// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^4) pattern tests, each O(1) or, past the
-// constant-time tests, O(r log(n/r)): O(n log n + n r + r^5 log(n/r)). Space O(r^2 + n). Pre: a
+// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^4) pattern tests: the X3 tests of STEPs 2 and
+// 4 O(r^3), O(1) each (chazelle_dobkin.h); the X4 tests O(r^4), each O(1) or, past the constant-time
+// tests, O(r log(n/r)): O(n log n + n r + r^5 log(n/r)). Space O(r^2 + n). Pre: a
 // simple counter-clockwise polygon. Output: an optimal convex decomposition (OPT = r + 1 - the most
 // compatible patterns), Steiner points exact.
 #include "algorithms/chazelle_dobkin.h"

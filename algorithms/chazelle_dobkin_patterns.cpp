@@ -106,21 +106,26 @@ Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segment
   compute_bare_cones();
   if (r == 0) return;
   const VisibilityGraph visibility(p);
-  std::vector<std::uint32_t> visible;
+  std::vector<std::uint32_t> visible, seen;
   std::int64_t triangles = 0;
   for (std::size_t i = 0; i < r; ++i) {
     visible.clear();
-    visibility.visible_from(notches_[i], visible, triangles);
-    compute_transitions(i, visible);
+    seen.clear();
+    visibility.visible_from(notches_[i], visible, triangles, &seen);
+    compute_transitions(i, visible, seen);
   }
 }
 
 // For each other notch w: the vertex through which notch `from`'s view passes across w's boundary
 // position. `visible` is in counter-clockwise order from the notch, so the boundary points the notch
 // sees, in boundary order, sweep counter-clockwise around it: the last vertex x seen up to w and the
-// first y seen from w on bound the hidden stretch that holds w (when w itself is not seen), and the
-// window over it lies on the ray through x when the boundary turns away behind x, else through y.
-void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible) {
+// first y seen from w on bound the stretch that holds w (when w itself is not seen). Between x and y
+// the notch sees part of one edge: the boundary before that edge lies behind the window on the ray
+// through x, the boundary after it behind the window through y. (Usually the edge starts at x or
+// ends at y and only one of them is a window; when the notch looks between x and y onto a farther
+// edge, both are.)
+void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible,
+                                   const std::vector<std::uint32_t>& seen) {
   const std::size_t n = p_.size(), r = notches_.size();
   const VertexId v = notches_[from];
   auto offset = [&](std::size_t u) { return (u + n - v) % n; };
@@ -132,8 +137,8 @@ void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint
     const VertexId x = *(after_w - 1);
     VertexId through = x;
     if (x != w) {
-      const VertexId y = *after_w;
-      if (orient(p_[v], p_[x], p_[p_.next(x)]) > 0) through = y;
+      const VertexId edge = seen[static_cast<std::size_t>(after_w - visible.begin()) - 1];
+      if (offset(w) > offset(edge)) through = *after_w;
     }
     transition_[from * r + k] = through;
     const bool adjacent = offset(w) == 1 || offset(w) == n - 1;
@@ -145,7 +150,7 @@ void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint
 void Patterns::compute_bare_cones() {
   for (std::size_t k = 0; k < notches_.size(); ++k) {
     const VertexId v = notches_[k];
-    const QPoint &pv = at(v), &after = at(static_cast<VertexId>(p_.next(v))), &before = at(static_cast<VertexId>(p_.prev(v)));
+    const QPoint &pv = at(v), &after = at(next(v)), &before = at(prev(v));
     bare_.push_back({k, after, before});
     bare_joint_.push_back(cone(bare_.back()));
     forward_branch_.push_back({k, after, mirrored(pv, before)});
@@ -210,10 +215,9 @@ std::vector<QPoint> Patterns::x3_region(const std::array<const Joint*, 3>& joint
   return region;
 }
 
-// Condition 3, on the chosen point: its three edges lie in P.
-std::optional<QPoint> Patterns::verified(const QPoint& s, const std::array<const Joint*, 3>& joints) {
-  for (const Joint* j : joints)
-    if (!sees(notches_[j->notch], s)) return std::nullopt;
+// The region's point is the Steiner point: condition 3 of Theorem 14 follows from the views that
+// bound the region (see the header comment).
+std::optional<QPoint> Patterns::found(const QPoint& s) {
   ++x3_found_;
   return s;
 }
@@ -223,8 +227,7 @@ std::optional<QPoint> Patterns::x3(const Joint& a, const Joint& b, const Joint& 
   const std::array<const Joint*, 3> joints{&a, &b, &c};
   const std::vector<QPoint> region = x3_region(joints);
   if (region.empty()) return std::nullopt;
-  ++x3_candidates_;
-  return verified(average(region), joints);
+  return found(average(region));
 }
 
 std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const Joint& c, bool counter_clockwise) {
@@ -232,7 +235,6 @@ std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const
   const std::array<const Joint*, 3> joints{&a, &b, &c};
   const std::vector<QPoint> region = x3_region(joints);
   if (region.empty()) return std::nullopt;
-  ++x3_candidates_;
   const QPoint& v = notch_point(a.notch);
   const QPoint* best = &region[0];
   for (const QPoint& q : region) {
@@ -241,7 +243,7 @@ std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const
   }
   const QPoint mid = average(region);
   const QPoint s(best->x() + (mid.x() - best->x()) / 64, best->y() + (mid.y() - best->y()) / 64);
-  return verified(s, joints);
+  return found(s);
 }
 
 // The tip of Q facing the chain from notch a counter-clockwise to notch b (Theorem 15's reductions
@@ -312,7 +314,6 @@ void Patterns::report(Counters& counters) const {
   counters["x2_tests"] += x2_tests_;
   counters["x2_found"] += x2_found_;
   counters["x3_tests"] += x3_tests_;
-  counters["x3_candidates"] += x3_candidates_;
   counters["x3_found"] += x3_found_;
   counters["x4_tests"] += x4_tests_;
   counters["x4_found"] += x4_found_;

@@ -23,25 +23,36 @@
 //     to c. The directions from a whose visible boundary point is on that chain form one angular
 //     interval, bounded by the direction where a's view passes from the chain a..b to the chain b..c
 //     and the one where it passes from b..c to c..a. That direction (`transition`) goes through b when
-//     a sees b, and otherwise through the notch whose window hides b: the last vertex a sees before b
-//     when the boundary turns away behind it, else the first vertex a sees after b. These are the
-//     lines of Q's edges aC and aB; with Q's other four edges, the kernel of Q is the intersection of
-//     six open half-planes, one on each side of each notch.
+//     a sees b, and otherwise through the vertex whose window hides b: between the last vertex x
+//     that a sees before b and the first y after it, a sees part of one edge; b lies behind the
+//     window through x when it comes before that edge, behind the window through y when after it
+//     (both x and y are windows when a looks between them onto a farther edge). These are the lines
+//     of Q's edges aC and aB; with Q's other four edges, the kernel of Q is the intersection of six
+//     open half-planes, one on each side of each notch.
 //   - The segments' clipping to the notch's range (R(v_i, L_i)) and to the triangle (R(v_i, v_i v_j))
 //     becomes the open range cone of each (adapted) notch and the open triangle abc: a further seven
 //     half-planes. S is taken as the average of the vertices of this convex region (exact rationals),
 //     which lies in its interior whenever the region has positive area.
-//   - Condition 3 (C, A and B lie on the segments R(.,.), i.e. Q lies in P) is checked on the chosen
-//     S directly, and only for triples that pass the O(1) half-plane test: its three edges are tested
-//     against P's boundary cut into convex chains between the notches (Sec. 2.2.2, Figure 2.6;
-//     algorithms/boundary_chains.h), O(log k) per chain of k edges, O(r log(n/r)) in all, as in the
-//     proof of Theorem 15. By the sufficiency half of Theorem 14, when Q lies in P
-//     every kernel point is a Steiner point; by the necessity half, no Steiner point exists otherwise.
+//   - Condition 3 (C, A and B lie on the segments R(.,.), i.e. Q lies in P) needs no test of its own:
+//     with the views above it holds at every point S of the region. Suppose aS met P's boundary before
+//     S, first at p. The direction aS lies strictly between a's views across b and across c, so p lies
+//     on the chain b..c, neither b nor c. The chord ap cuts P into D (bounded by ap, the chain from b
+//     to p and the chain a..b) and D' (ap, the chain from p to c and c..a). b's segment towards S
+//     starts into D and cannot cross ap (its line meets aS only at S, beyond p); the first boundary
+//     point it could meet is on c..a (b's views), which D's boundary touches only at a, off the
+//     segment (S lies in the open triangle); so it reaches S inside D. Likewise c's puts S in D', and
+//     D and D' meet only on ap: a contradiction. So a sees S, and b and c likewise, and S, in the
+//     joints' cones and the open triangle, is a Steiner point. The thesis tests condition 3 in O(1)
+//     on segments precomputed from the superranges; here nothing is left to test, and an X3 test is
+//     the half-planes alone, O(1). (Checked while writing this against a test of S's three edges
+//     against the boundary: every candidate of both programs on 3,530 polygons, 20,405 candidates,
+//     and every triple of bare notches and branches on 2,080 polygons, 872,436 candidates, collinear
+//     vertices included; no edge failed.)
 //   - Steiner points whose region has no interior (patterns that exist only in degenerate position,
 //     an edge through a vertex of P or exactly along a window) are not reported.
 //   - Corollary 14.2 (a subtree's Steiner point chosen to turn its edge at z_i as far as possible):
 //     the extreme vertex of the same region, seen from z_i; it lies on the region's boundary, so it
-//     is moved 1/64 of the way towards the region's average, into the interior, before it is checked.
+//     is moved 1/64 of the way towards the region's average, into the interior.
 //   - X4 (Theorem 15): "applying the two reductions ... takes A to the intersection of v_i r_ij and
 //     v_j l_ji": each Steiner point is put at the tip of Q facing the chain between its two notches,
 //     where each notch's edge is turned as far towards that chain as its range, its view across the
@@ -54,7 +65,8 @@
 // visibility of every vertex from each notch (algorithms/visibility.h, O(n) per notch after an
 // O(n log n) triangulation): the transitions are read from it by binary search, O(r^2 log n) in all.
 // So the preprocessing is O(n log n + n r) where the thesis has O(n + r^2 log n); every test after it
-// costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the boundary).
+// costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the boundary in X4's
+// tips and tests).
 //
 // Exact: every test is an orientation on exact rationals; Steiner points are exact rationals.
 #pragma once
@@ -103,7 +115,7 @@ class Patterns {
 
   // The cone that resolves what is left of the angle at a: between the extensions of its arms beyond
   // it while that angle is reflex, between the arms themselves once it is not. A bare notch's is
-  // computed once (the program asks for it O(r^3) times).
+  // computed once; the program keeps the joint of each subtree (it asks for them O(r^3) times).
   Joint joint(const AdaptedNotch& a) const;
   const Joint& bare_joint(std::size_t notch) const { return bare_joint_[notch]; }
   // The directions of an edge hanging at a bare notch that leave the angle on its other side reflex:
@@ -124,8 +136,7 @@ class Patterns {
 
   // Theorem 14 on joints a, b, c at distinct notches in counter-clockwise boundary order: a Steiner
   // point S such that Sa, Sb, Sc lie in P, leave S without a reflex angle and each lies in its joint's
-  // cone; or nothing. O(1) when the half-planes reject, O(r log(n/r)) otherwise. `x3` returns the average of the
-  // region's vertices; `x3_extreme` the point of the region turned furthest around a (counter-clockwise
+  // cone; or nothing. O(1) (see the header comment). `x3` returns the average of the region's vertices; `x3_extreme` the point of the region turned furthest around a (counter-clockwise
   // when `counter_clockwise`), moved 1/64 of the way towards that average so that it is interior
   // (Corollary 14.2; see the header comment).
   std::optional<QPoint> x3(const Joint& a, const Joint& b, const Joint& c);
@@ -148,21 +159,24 @@ class Patterns {
   // Whether the closed segment st, between interior points, avoids P's boundary. O(r log(n/r)).
   bool inside(const QPoint& s, const QPoint& t) const;
 
-  // Counts "x2_tests", "x2_found", "x3_tests", "x3_candidates" (past the half-planes), "x3_found",
-  // "x4_tests", "x4_found", "tips" (computed), "tips_found" (that exist), "segment_search_steps"
-  // (binary-search steps and edges tested by sees and inside).
+  // Counts "x2_tests", "x2_found", "x3_tests", "x3_found", "x4_tests", "x4_found", "tips" (computed),
+  // "tips_found" (that exist), "segment_search_steps" (binary-search steps and edges tested by sees
+  // and inside).
   void report(Counters& counters) const;
 
  private:
   const QPoint& at(VertexId v) const { return exact_[v]; }
+  VertexId next(VertexId v) const { return static_cast<VertexId>(p_.next(v)); }
+  VertexId prev(VertexId v) const { return static_cast<VertexId>(p_.prev(v)); }
   VertexId transition(std::size_t from, std::size_t towards) const {
     return transition_[from * notches_.size() + towards];
   }
-  void compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible);
+  void compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible,
+                           const std::vector<std::uint32_t>& seen);
   void compute_bare_cones();
   Joint cone(const AdaptedNotch& a) const;
   std::vector<QPoint> x3_region(const std::array<const Joint*, 3>& joints) const;
-  std::optional<QPoint> verified(const QPoint& s, const std::array<const Joint*, 3>& joints);
+  std::optional<QPoint> found(const QPoint& s);
   const std::optional<QPoint>& tip(std::size_t a, std::size_t b);
 
   const Polygon& p_;
@@ -179,7 +193,7 @@ class Patterns {
   // r x r, filled on demand: the tip of Q facing the chain from notch a to notch b (Theorem 15).
   std::vector<char> tip_known_;
   std::vector<std::optional<QPoint>> tip_;
-  std::int64_t x2_tests_ = 0, x2_found_ = 0, x3_tests_ = 0, x3_candidates_ = 0, x3_found_ = 0;
+  std::int64_t x2_tests_ = 0, x2_found_ = 0, x3_tests_ = 0, x3_found_ = 0;
   std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0, tips_found_ = 0;
 };
 

@@ -50,7 +50,8 @@ void VisibilityGraph::link_twins() {
 //
 // The walk is an in-order traversal of the cones (right sub-cone, the apex, left sub-cone), so the
 // vertices come out in counter-clockwise order and need no sorting.
-void VisibilityGraph::visible_from(std::size_t v, std::vector<std::uint32_t>& out, std::int64_t& triangles) const {
+void VisibilityGraph::visible_from(std::size_t v, std::vector<std::uint32_t>& out, std::int64_t& triangles,
+                                   std::vector<std::uint32_t>* seen) const {
   constexpr std::uint32_t kWindow = UINT32_MAX;
   struct Item {
     std::uint32_t emit;   // a visible vertex to output, or kWindow
@@ -72,7 +73,10 @@ void VisibilityGraph::visible_from(std::size_t v, std::vector<std::uint32_t>& ou
       continue;
     }
     const std::uint32_t right_end = target_[twin_[w.slot]];
-    if (w.slot == start_[right_end]) continue;
+    if (w.slot == start_[right_end]) {
+      if (seen) seen->push_back(right_end);
+      continue;
+    }
     ++triangles;
     const std::uint32_t c = target_[w.slot - 1];
     const std::uint32_t to_left = twin_[w.slot - 1] - 1;  // half-edge c -> left end

@@ -31,7 +31,11 @@ class VisibilityGraph {
 
   // Appends to `out` every u != v such that vu is an edge or a diagonal of p, in counter-clockwise order
   // around v (increasing (u - v) mod n). O(n). Adds the number of triangles entered to `triangles`.
-  void visible_from(std::size_t v, std::vector<std::uint32_t>& out, std::int64_t& triangles) const;
+  // With `seen`, also appends, for each two consecutive vertices appended to `out`, the polygon edge
+  // (by its first vertex e, the edge from e to e + 1) that v sees strictly between them: between two
+  // consecutive visible vertices the visible boundary is part of one edge, where the walk's cone ends.
+  void visible_from(std::size_t v, std::vector<std::uint32_t>& out, std::int64_t& triangles,
+                    std::vector<std::uint32_t>* seen = nullptr) const;
 
  private:
   std::size_t offset(std::size_t from, std::size_t to) const { return (to + n_ - from) % n_; }

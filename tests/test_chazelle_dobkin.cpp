@@ -207,6 +207,28 @@ TEST(ChazelleDobkinPatterns, NoX3MissedOnAGrid) {
   }
 }
 
+// Notch a (the dent in the bottom) looks up a corridor between notches x and y onto the far wall of a
+// room; the notch w in the room's lower left edge comes after that wall in boundary order, so a's view
+// passes across w's position on the ray through y, not through x, though the boundary also turns
+// away behind x. Taking x there would close a's range before the gap, and the X3-pattern of a, x and w,
+// whose Steiner point lies in the gap, would be missed.
+TEST(ChazelleDobkinPatterns, FindsTheX3SeenBetweenTwoWindows) {
+  const Polygon p = Polygon::make({{30, -30}, {30, 20}, {10, 20}, {10, 50}, {200, 100}, {-200, 100}, {-105, 76},
+                                   {-10, 50}, {-10, 20}, {-30, 20}, {-30, -30}, {-5, -30}, {0, -10}, {5, -30}});
+  cd::Patterns patterns(p);
+  const auto& notches = patterns.notches();
+  ASSERT_EQ(notches, (std::vector<VertexId>{2, 3, 6, 7, 8, 12}));
+  const std::size_t a = 5, x = 1, w = 2;
+  const auto s = patterns.x3(patterns.bare_joint(a), patterns.bare_joint(x), patterns.bare_joint(w));
+  ASSERT_TRUE(s.has_value());
+  EXPECT_TRUE(is_x3_steiner(p, {notches[a], notches[x], notches[w]}, *s));
+  Counters counters;
+  const Decomposition d = with_x3(p, notches, {a, x, w}, *s, counters);
+  const Validation v = validate(p, d, Kind::Convex, true);
+  EXPECT_TRUE(v.ok) << v.reason;
+  EXPECT_EQ(pieces_of(p, d).size(), notches.size());
+}
+
 // ---- the programs (chazelle-dobkin and chazelle-dobkin-n5) ----
 
 // Runs `name` on p, expects a valid result, returns its piece count.
