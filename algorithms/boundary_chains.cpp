@@ -121,6 +121,11 @@ SegmentSearch::SegmentSearch(const Polygon& p, const std::vector<QPoint>& exact)
   std::vector<VertexId> notches;
   split_into_chains(p, notches, chains_);
   if (chains_.empty() && p.size() >= 3) chains_.push_back(whole_boundary(p));
+  for (const Chain& c : chains_) {
+    CGAL::Bbox_2 box = p[chain_vertex(p, c, 0)].bbox();
+    for (std::size_t j = 1; j <= c.edges; ++j) box += p[chain_vertex(p, c, j)].bbox();
+    boxes_.push_back(box);
+  }
 }
 
 // The chain's edges, other than those at `skip`, searched in at most three ranges.
@@ -130,8 +135,14 @@ bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId sk
   u_ = t - s;
   sx_ = Interval(CGAL::to_interval(s.x())), sy_ = Interval(CGAL::to_interval(s.y()));
   ux_ = Interval(CGAL::to_interval(u_.x())), uy_ = Interval(CGAL::to_interval(u_.y()));
+  const Interval tx(CGAL::to_interval(t.x())), ty(CGAL::to_interval(t.y()));
+  const CGAL::Bbox_2 around(std::min(sx_.inf(), tx.inf()), std::min(sy_.inf(), ty.inf()), std::max(sx_.sup(), tx.sup()),
+                            std::max(sy_.sup(), ty.sup()));
   const std::size_t n = p_.size();
-  for (const Chain& c : chains_) {
+  for (std::size_t k = 0; k < chains_.size(); ++k) {
+    ++steps_;
+    if (!CGAL::do_overlap(around, boxes_[k])) continue;
+    const Chain& c = chains_[k];
     chain_ = &c;
     std::size_t skipped[2] = {c.edges, c.edges};  // the chain's own numbers of the edges left out
     if (skip != kNoVertex) {
@@ -172,14 +183,13 @@ bool SegmentSearch::range_meets(std::size_t lo, std::size_t hi) {
 // The first edge in [lo, hi) whose direction is at or past `sense` * (t - s) in the order around d0;
 // hi when there is none. The directions are sorted in that order, so this is a binary search.
 std::size_t SegmentSearch::first_edge_reaching(std::size_t lo, std::size_t hi, int sense) {
-  const Vec d0 = x(1) - x(0);
-  const int c = sense * exact_cross_sign(d0, u_);
-  const int half_u = c > 0 ? 0 : c < 0 ? 1 : sense * exact_dot_sign(d0, u_) > 0 ? 0 : 1;
+  const int c = sense * cross_sign_with_u(0, 1, 1);
+  const int half_u = c > 0 ? 0 : c < 0 ? 1 : sense * dot_sign_with_u(0, 1) > 0 ? 0 : 1;
   auto before_u = [&](std::size_t j) {
     ++steps_;
     const int h = half_of_edge(p_, *chain_, j);
     if (h != half_u) return h < half_u;
-    return sense * edge_turn(j) > 0;
+    return sense * cross_sign_with_u(j, j + 1, 1) > 0;
   };
   while (lo < hi) {
     const std::size_t mid = lo + (hi - lo) / 2;
@@ -192,7 +202,7 @@ std::size_t SegmentSearch::first_edge_reaching(std::size_t lo, std::size_t hi, i
 // Vertices lo..hi, along which the signed distance to the segment's line is monotone: only the edges
 // where it reaches the line, the stretch on the line and the edge where it leaves can meet the segment.
 bool SegmentSearch::run_meets(std::size_t lo, std::size_t hi) {
-  const int rising = exact_cross_sign(u_, x(hi) - x(lo));
+  const int rising = cross_sign_with_u(lo, hi, -1);
   const int dir = rising == 0 ? 1 : rising;
   auto first = [&](std::size_t from, int at_least) {
     std::size_t a = from, b = hi + 1;
@@ -221,15 +231,26 @@ int SegmentSearch::side(std::size_t j) {
   return sign != kUnsettled ? sign : orient(*s_, *t_, x(j));
 }
 
-// The sign of cross(e_j, u) for the chain's edge e_j from vertex j to j + 1.
-int SegmentSearch::edge_turn(std::size_t j) {
-  const Point &a = input(j), &b = input(j + 1);
+// The sign of sense * cross(x_to - x_from, u) for chain vertices from and to.
+int SegmentSearch::cross_sign_with_u(std::size_t from, std::size_t to, int sense) {
+  const Point &a = input(from), &b = input(to);
   int sign;
   {
     CGAL::Protect_FPU_rounding<true> upwards;
     sign = settled_sign((Interval(b.x()) - Interval(a.x())) * uy_ - (Interval(b.y()) - Interval(a.y())) * ux_);
   }
-  return sign != kUnsettled ? sign : exact_cross_sign(x(j + 1) - x(j), u_);
+  return sense * (sign != kUnsettled ? sign : exact_cross_sign(x(to) - x(from), u_));
+}
+
+// The sign of dot(x_to - x_from, u).
+int SegmentSearch::dot_sign_with_u(std::size_t from, std::size_t to) {
+  const Point &a = input(from), &b = input(to);
+  int sign;
+  {
+    CGAL::Protect_FPU_rounding<true> upwards;
+    sign = settled_sign((Interval(b.x()) - Interval(a.x())) * ux_ + (Interval(b.y()) - Interval(a.y())) * uy_);
+  }
+  return sign != kUnsettled ? sign : exact_dot_sign(x(to) - x(from), u_);
 }
 
 bool SegmentSearch::meets(std::size_t from, std::size_t to) {

@@ -13,6 +13,7 @@
 
 #include "core/registry.h"
 
+#include <CGAL/Bbox_2.h>
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
@@ -109,7 +110,9 @@ void split_into_chains(const Polygon& p, std::vector<VertexId>& notches, std::ve
 // for all of them. Each chain is cut where its direction passes the segment's and the opposite one, into
 // at most three runs along which the signed distance to the segment's line is monotone; a binary search
 // in each finds the only edges that can reach the line, which are then tested exactly. The signs are
-// settled in interval arithmetic where it can, else in rationals: every answer is exact.
+// settled in interval arithmetic where it can, else in rationals: every answer is exact. A chain whose
+// bounding box the segment's misses is passed over in O(1): the O(r) bound stays, the searches run
+// only on the chains near the segment.
 class SegmentSearch {
  public:
   // `exact` holds p's vertices as rationals.
@@ -128,7 +131,8 @@ class SegmentSearch {
   const QPoint& x(std::size_t j) const { return exact_[chain_vertex(p_, *chain_, j)]; }
   const Point& input(std::size_t j) const { return p_[chain_vertex(p_, *chain_, j)]; }
   int side(std::size_t j);
-  int edge_turn(std::size_t j);
+  int cross_sign_with_u(std::size_t from, std::size_t to, int sense);
+  int dot_sign_with_u(std::size_t from, std::size_t to);
   std::size_t first_edge_reaching(std::size_t lo, std::size_t hi, int sense);
   bool range_meets(std::size_t lo, std::size_t hi);
   bool run_meets(std::size_t lo, std::size_t hi);
@@ -137,6 +141,7 @@ class SegmentSearch {
   const Polygon& p_;
   const std::vector<QPoint>& exact_;
   std::vector<Chain> chains_;
+  std::vector<CGAL::Bbox_2> boxes_;  // each chain's, from its input vertices
   const Chain* chain_ = nullptr;
   // The segment of the current search, its direction u = t - s, and intervals around s and u that
   // settle most signs in floating point.
