@@ -86,6 +86,62 @@ bool splits_reflex_side(const QPoint& a, const QPoint& b, const QPoint& tip, con
   return s * cross(u, d) >= 0 && s * cross(d, w) >= 0;
 }
 
+// The filter of the X3 test: the region of x3_region computed again in interval arithmetic. Every sign
+// it takes is certain or it gives up (CGAL's Uncertain_conversion_exception), so when it finds the
+// region empty, the exact computation, which takes the same branches, would find it empty too.
+using Interval = CGAL::Interval_nt<false>;
+
+struct Around {
+  Interval x, y;
+};
+
+Around approx(const Point& p) { return {Interval(p.x()), Interval(p.y())}; }
+Around approx(const QPoint& p) { return {Interval(CGAL::to_interval(p.x())), Interval(CGAL::to_interval(p.y()))}; }
+Around minus(const Around& a, const Around& b) { return {a.x - b.x, a.y - b.y}; }
+Interval approx_cross(const Around& u, const Around& v) { return u.x * v.y - u.y * v.x; }
+Interval approx_dot(const Around& u, const Around& v) { return u.x * v.x + u.y * v.y; }
+int sure_sign(const Interval& v) { return static_cast<int>(CGAL::sign(v).make_certain()); }
+int sure_orient(const Around& o, const Around& a, const Around& b) { return sure_sign(approx_cross(minus(a, o), minus(b, o))); }
+
+bool sure_turns_before(const Around& reference, const Around& d1, const Around& d2) {
+  auto half = [&](const Around& d) {
+    const int c = sure_sign(approx_cross(reference, d));
+    return c > 0 || (c == 0 && sure_sign(approx_dot(reference, d)) > 0) ? 0 : 1;
+  };
+  const int h1 = half(d1), h2 = half(d2);
+  if (h1 != h2) return h1 < h2;
+  return sure_sign(approx_cross(d1, d2)) > 0;
+}
+
+struct AroundPlane {
+  Around from, to;
+};
+
+std::vector<Around> sure_clip(const std::vector<Around>& poly, const AroundPlane& h) {
+  std::vector<Around> out;
+  const Around d = minus(h.to, h.from);
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Around &s = poly[i], &e = poly[(i + 1) % poly.size()];
+    const Interval fs = approx_cross(d, minus(s, h.from)), fe = approx_cross(d, minus(e, h.from));
+    const int os = sure_sign(fs), oe = sure_sign(fe);
+    if (os >= 0) out.push_back(s);
+    if (os * oe < 0) {
+      const Interval t = fs / (fs - fe);
+      out.push_back({s.x + t * (e.x - s.x), s.y + t * (e.y - s.y)});
+    }
+  }
+  return out;
+}
+
+Interval approx_twice_area(const std::vector<Around>& poly) {
+  Interval sum = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Around &s = poly[i], &e = poly[(i + 1) % poly.size()];
+    sum += s.x * e.y - s.y * e.x;
+  }
+  return sum;
+}
+
 std::vector<QPoint> exact_vertices(const Polygon& p) {
   std::vector<QPoint> exact;
   exact.reserve(p.size());
@@ -185,10 +241,16 @@ bool Patterns::x2(const AdaptedNotch& a, const AdaptedNotch& b) {
   return found;
 }
 
+Joint::Joint(std::size_t notch, QPoint lower, QPoint upper) : notch(notch), lower(std::move(lower)), upper(std::move(upper)) {
+  const Around l = approx(this->lower), u = approx(this->upper);
+  approx_arms = {l.x, l.y, u.x, u.y};
+}
+
 // The region of Steiner points of Theorem 14 before condition 3: the open triangle, each joint's cone
 // and, at each notch, the views across the other two (the kernel of Q). Returned closed, with its
 // vertices; empty when it has no interior.
 std::vector<QPoint> Patterns::x3_region(const std::array<const Joint*, 3>& joints) const {
+  if (x3_region_surely_empty(joints)) return {};
   std::vector<QPoint> region;
   for (const Joint* j : joints) region.push_back(notch_point(j->notch));
   if (orient(region[0], region[1], region[2]) <= 0) return {};  // condition 1
@@ -213,6 +275,35 @@ std::vector<QPoint> Patterns::x3_region(const std::array<const Joint*, 3>& joint
   }
   if (twice_area(region) <= 0) return {};
   return region;
+}
+
+// x3_region's steps on intervals (the filter above): true only when they prove the region empty.
+bool Patterns::x3_region_surely_empty(const std::array<const Joint*, 3>& joints) const {
+  CGAL::Protect_FPU_rounding<true> upwards;
+  try {
+    std::vector<Around> region;
+    for (const Joint* j : joints) region.push_back(approx(p_[notches_[j->notch]]));
+    if (sure_orient(region[0], region[1], region[2]) <= 0) return true;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Joint& n = *joints[k];
+      const std::size_t ahead = joints[(k + 1) % 3]->notch, behind = joints[(k + 2) % 3]->notch;
+      const VertexId vid = notches_[n.notch];
+      const Around v = approx(p_[vid]), n_lower{n.approx_arms[0], n.approx_arms[1]}, n_upper{n.approx_arms[2], n.approx_arms[3]};
+      const Around reference = minus(approx(p_[p_.next(vid)]), v), lower = minus(n_lower, v), upper = minus(n_upper, v);
+      const Around low = approx(p_[transition(n.notch, ahead)]), high = approx(p_[transition(n.notch, behind)]);
+      if (!sure_turns_before(reference, minus(low, v), upper) || !sure_turns_before(reference, lower, minus(high, v))) return true;
+      std::vector<AroundPlane> planes{{v, n_lower}, {n_upper, v}};
+      if (sure_turns_before(reference, lower, minus(low, v))) planes.push_back({v, low});
+      if (sure_turns_before(reference, minus(high, v), upper)) planes.push_back({high, v});
+      for (const AroundPlane& h : planes) {
+        region = sure_clip(region, h);
+        if (region.size() < 3) return true;
+      }
+    }
+    return sure_sign(approx_twice_area(region)) <= 0;
+  } catch (const CGAL::Uncertain_conversion_exception&) {
+    return false;
+  }
 }
 
 // The region's point is the Steiner point: condition 3 of Theorem 14 follows from the views that
