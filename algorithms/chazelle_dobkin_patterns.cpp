@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
+#include <utility>
 
 namespace pd::cd {
 namespace {
@@ -13,40 +15,53 @@ namespace {
 using Vec = ExactKernel::Vector_2;
 using Segment = ExactKernel::Segment_2;
 
-Rational cross(const Vec& u, const Vec& v) { return u.x() * v.y() - u.y() * v.x(); }
-Rational dot(const Vec& u, const Vec& v) { return u.x() * v.x() + u.y() * v.y(); }
+// The region of an X3 test is computed on two kernels: on intervals first (a filter, whose signs throw
+// CGAL::Uncertain_conversion_exception where they are not certain) and exactly on rationals. The same
+// templates serve both, so that the two take the same branches wherever the filter's signs are certain.
+template <class V>
+std::decay_t<decltype(std::declval<V>().x())> cross(const V& u, const V& v) { return u.x() * v.y() - u.y() * v.x(); }
+template <class V>
+std::decay_t<decltype(std::declval<V>().x())> dot(const V& u, const V& v) { return u.x() * v.x() + u.y() * v.y(); }
+template <class FT>
+int sign_of(const FT& value) { return static_cast<int>(CGAL::make_certain(CGAL::sign(value))); }
 
 // The open half-plane left of the directed line from `from` through `to`.
+template <class P>
 struct HalfPlane {
-  QPoint from, to;
+  P from, to;
 };
 
 // Where segment se meets h's line, for s and e on opposite sides of it.
-QPoint crossing(const HalfPlane& h, const QPoint& s, const QPoint& e) {
-  const Vec d = h.to - h.from;
-  const Rational fs = cross(d, s - h.from), fe = cross(d, e - h.from);
-  const Rational t = fs / (fs - fe);
-  return QPoint(s.x() + t * (e.x() - s.x()), s.y() + t * (e.y() - s.y()));
+template <class P>
+P crossing(const HalfPlane<P>& h, const P& s, const P& e) {
+  using FT = std::decay_t<decltype(s.x())>;
+  const auto d = h.to - h.from;
+  const FT fs = cross(d, s - h.from), fe = cross(d, e - h.from);
+  const FT t = fs / (fs - fe);
+  return P(s.x() + t * (e.x() - s.x()), s.y() + t * (e.y() - s.y()));
 }
 
 // The part of convex polygon `poly` on the closed left side of h (Sutherland-Hodgman, one plane).
-std::vector<QPoint> clip(const std::vector<QPoint>& poly, const HalfPlane& h) {
-  std::vector<QPoint> out;
+template <class P>
+std::vector<P> clip(const std::vector<P>& poly, const HalfPlane<P>& h) {
+  std::vector<P> out;
+  const auto d = h.to - h.from;
   for (std::size_t i = 0; i < poly.size(); ++i) {
-    const QPoint& s = poly[i];
-    const QPoint& e = poly[(i + 1) % poly.size()];
-    const int os = orient(h.from, h.to, s), oe = orient(h.from, h.to, e);
+    const P& s = poly[i];
+    const P& e = poly[(i + 1) % poly.size()];
+    const int os = sign_of(cross(d, s - h.from)), oe = sign_of(cross(d, e - h.from));
     if (os >= 0) out.push_back(s);
     if (os * oe < 0) out.push_back(crossing(h, s, e));
   }
   return out;
 }
 
-Rational twice_area(const std::vector<QPoint>& poly) {
-  Rational sum = 0;
+template <class P>
+std::decay_t<decltype(std::declval<P>().x())> twice_area(const std::vector<P>& poly) {
+  std::decay_t<decltype(std::declval<P>().x())> sum = 0;
   for (std::size_t i = 0; i < poly.size(); ++i) {
-    const QPoint& s = poly[i];
-    const QPoint& e = poly[(i + 1) % poly.size()];
+    const P& s = poly[i];
+    const P& e = poly[(i + 1) % poly.size()];
     sum += s.x() * e.y() - s.y() * e.x();
   }
   return sum;
@@ -55,14 +70,15 @@ Rational twice_area(const std::vector<QPoint>& poly) {
 // Directions at a notch, ordered by the counter-clockwise angle from `reference` (the notch's forward
 // polygon edge), in [0, 360): every direction used here lies in the notch's interior angle, where
 // this order is the angular order of the thesis's sweeps.
-bool turns_before(const Vec& reference, const Vec& d1, const Vec& d2) {
-  auto half = [&](const Vec& d) {
-    const Rational c = cross(reference, d);
-    return c > 0 || (c == 0 && dot(reference, d) > 0) ? 0 : 1;
+template <class V>
+bool turns_before(const V& reference, const V& d1, const V& d2) {
+  auto half = [&](const V& d) {
+    const int c = sign_of(cross(reference, d));
+    return c > 0 || (c == 0 && sign_of(dot(reference, d)) > 0) ? 0 : 1;
   };
   const int h1 = half(d1), h2 = half(d2);
   if (h1 != h2) return h1 < h2;
-  return cross(d1, d2) > 0;
+  return sign_of(cross(d1, d2)) > 0;
 }
 
 // 2v - w: the point such that v lies halfway between it and w (the extension of wv beyond v).
@@ -86,61 +102,39 @@ bool splits_reflex_side(const QPoint& a, const QPoint& b, const QPoint& tip, con
   return s * cross(u, d) >= 0 && s * cross(d, w) >= 0;
 }
 
-// The filter of the X3 test: the region of x3_region computed again in interval arithmetic. Every sign
-// it takes is certain or it gives up (CGAL's Uncertain_conversion_exception), so when it finds the
-// region empty, the exact computation, which takes the same branches, would find it empty too.
-using Interval = CGAL::Interval_nt<false>;
-
-struct Around {
-  Interval x, y;
+// What x3_region needs at one notch of the triple: the notch, the next polygon vertex (the reference
+// direction of turns_before), its joint's arms and the vertices its views across the notch ahead and
+// the notch behind pass through.
+template <class P>
+struct NotchSide {
+  P v, after, lower, upper, low, high;
 };
 
-Around approx(const Point& p) { return {Interval(p.x()), Interval(p.y())}; }
-Around approx(const QPoint& p) { return {Interval(CGAL::to_interval(p.x())), Interval(CGAL::to_interval(p.y()))}; }
-Around minus(const Around& a, const Around& b) { return {a.x - b.x, a.y - b.y}; }
-Interval approx_cross(const Around& u, const Around& v) { return u.x * v.y - u.y * v.x; }
-Interval approx_dot(const Around& u, const Around& v) { return u.x * v.x + u.y * v.y; }
-int sure_sign(const Interval& v) { return static_cast<int>(CGAL::sign(v).make_certain()); }
-int sure_orient(const Around& o, const Around& a, const Around& b) { return sure_sign(approx_cross(minus(a, o), minus(b, o))); }
-
-bool sure_turns_before(const Around& reference, const Around& d1, const Around& d2) {
-  auto half = [&](const Around& d) {
-    const int c = sure_sign(approx_cross(reference, d));
-    return c > 0 || (c == 0 && sure_sign(approx_dot(reference, d)) > 0) ? 0 : 1;
-  };
-  const int h1 = half(d1), h2 = half(d2);
-  if (h1 != h2) return h1 < h2;
-  return sure_sign(approx_cross(d1, d2)) > 0;
-}
-
-struct AroundPlane {
-  Around from, to;
-};
-
-std::vector<Around> sure_clip(const std::vector<Around>& poly, const AroundPlane& h) {
-  std::vector<Around> out;
-  const Around d = minus(h.to, h.from);
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const Around &s = poly[i], &e = poly[(i + 1) % poly.size()];
-    const Interval fs = approx_cross(d, minus(s, h.from)), fe = approx_cross(d, minus(e, h.from));
-    const int os = sure_sign(fs), oe = sure_sign(fe);
-    if (os >= 0) out.push_back(s);
-    if (os * oe < 0) {
-      const Interval t = fs / (fs - fe);
-      out.push_back({s.x + t * (e.x - s.x), s.y + t * (e.y - s.y)});
+// The open triangle, each joint's cone and, at each notch, the views across the other two (the kernel
+// of Q), intersected; returned closed, with its vertices; empty when it has no interior.
+template <class P>
+std::vector<P> region_of(const std::array<NotchSide<P>, 3>& sides) {
+  std::vector<P> region{sides[0].v, sides[1].v, sides[2].v};
+  if (sign_of(cross(region[1] - region[0], region[2] - region[0])) <= 0) return {};  // condition 1
+  for (const NotchSide<P>& n : sides) {
+    const auto reference = n.after - n.v, lower = n.lower - n.v, upper = n.upper - n.v;
+    // Q's edges at this notch: the views across the notches ahead and behind.
+    if (!turns_before(reference, n.low - n.v, upper) || !turns_before(reference, lower, n.high - n.v)) return {};
+    std::vector<HalfPlane<P>> planes{{n.v, n.lower}, {n.upper, n.v}};
+    if (turns_before(reference, lower, n.low - n.v)) planes.push_back({n.v, n.low});
+    if (turns_before(reference, n.high - n.v, upper)) planes.push_back({n.high, n.v});
+    for (const HalfPlane<P>& h : planes) {
+      region = clip(region, h);
+      if (region.size() < 3) return {};
     }
   }
-  return out;
+  if (sign_of(twice_area(region)) <= 0) return {};
+  return region;
 }
 
-Interval approx_twice_area(const std::vector<Around>& poly) {
-  Interval sum = 0;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const Around &s = poly[i], &e = poly[(i + 1) % poly.size()];
-    sum += s.x * e.y - s.y * e.x;
-  }
-  return sum;
-}
+using IPoint = IntervalKernel::Point_2;
+
+IPoint approximately(const QPoint& q) { return IPoint(CGAL::to_interval(q.x()), CGAL::to_interval(q.y())); }
 
 std::vector<QPoint> exact_vertices(const Polygon& p) {
   std::vector<QPoint> exact;
@@ -241,69 +235,36 @@ bool Patterns::x2(const AdaptedNotch& a, const AdaptedNotch& b) {
   return found;
 }
 
-Joint::Joint(std::size_t notch, QPoint lower, QPoint upper) : notch(notch), lower(std::move(lower)), upper(std::move(upper)) {
-  const Around l = approx(this->lower), u = approx(this->upper);
-  approx_arms = {l.x, l.y, u.x, u.y};
-}
+Joint::Joint(std::size_t notch, QPoint lower, QPoint upper)
+    : notch(notch), lower(std::move(lower)), upper(std::move(upper)), lower_approx(approximately(this->lower)),
+      upper_approx(approximately(this->upper)) {}
 
-// The region of Steiner points of Theorem 14 before condition 3: the open triangle, each joint's cone
-// and, at each notch, the views across the other two (the kernel of Q). Returned closed, with its
-// vertices; empty when it has no interior.
+// The region of Steiner points of Theorem 14 before condition 3 (region_of), found empty on intervals
+// where their signs settle it (the filter: when every sign it takes is certain, its branches are the
+// exact computation's), else computed on rationals.
 std::vector<QPoint> Patterns::x3_region(const std::array<const Joint*, 3>& joints) const {
-  if (x3_region_surely_empty(joints)) return {};
-  std::vector<QPoint> region;
-  for (const Joint* j : joints) region.push_back(notch_point(j->notch));
-  if (orient(region[0], region[1], region[2]) <= 0) return {};  // condition 1
-  for (std::size_t k = 0; k < 3; ++k) {
-    const Joint& n = *joints[k];
-    const std::size_t ahead = joints[(k + 1) % 3]->notch, behind = joints[(k + 2) % 3]->notch;
-    const VertexId vid = notches_[n.notch];
-    const QPoint& v = at(vid);
-    const Vec reference = at(static_cast<VertexId>(p_.next(vid))) - v;
-    const Vec lower = n.lower - v, upper = n.upper - v;
-    // Q's edges at this notch: the views across the notches ahead and behind.
-    const QPoint& low = at(transition(n.notch, ahead));
-    const QPoint& high = at(transition(n.notch, behind));
-    if (!turns_before(reference, low - v, upper) || !turns_before(reference, lower, high - v)) return {};
-    std::vector<HalfPlane> planes{{v, n.lower}, {n.upper, v}};
-    if (turns_before(reference, lower, low - v)) planes.push_back({v, low});
-    if (turns_before(reference, high - v, upper)) planes.push_back({high, v});
-    for (const HalfPlane& h : planes) {
-      region = clip(region, h);
-      if (region.size() < 3) return {};
-    }
-  }
-  if (twice_area(region) <= 0) return {};
-  return region;
-}
-
-// x3_region's steps on intervals (the filter above): true only when they prove the region empty.
-bool Patterns::x3_region_surely_empty(const std::array<const Joint*, 3>& joints) const {
-  CGAL::Protect_FPU_rounding<true> upwards;
-  try {
-    std::vector<Around> region;
-    for (const Joint* j : joints) region.push_back(approx(p_[notches_[j->notch]]));
-    if (sure_orient(region[0], region[1], region[2]) <= 0) return true;
+  auto sides = [&](auto vertex, auto lower, auto upper) {
+    std::array<NotchSide<decltype(vertex(VertexId{0}))>, 3> out;
     for (std::size_t k = 0; k < 3; ++k) {
       const Joint& n = *joints[k];
       const std::size_t ahead = joints[(k + 1) % 3]->notch, behind = joints[(k + 2) % 3]->notch;
-      const VertexId vid = notches_[n.notch];
-      const Around v = approx(p_[vid]), n_lower{n.approx_arms[0], n.approx_arms[1]}, n_upper{n.approx_arms[2], n.approx_arms[3]};
-      const Around reference = minus(approx(p_[p_.next(vid)]), v), lower = minus(n_lower, v), upper = minus(n_upper, v);
-      const Around low = approx(p_[transition(n.notch, ahead)]), high = approx(p_[transition(n.notch, behind)]);
-      if (!sure_turns_before(reference, minus(low, v), upper) || !sure_turns_before(reference, lower, minus(high, v))) return true;
-      std::vector<AroundPlane> planes{{v, n_lower}, {n_upper, v}};
-      if (sure_turns_before(reference, lower, minus(low, v))) planes.push_back({v, low});
-      if (sure_turns_before(reference, minus(high, v), upper)) planes.push_back({high, v});
-      for (const AroundPlane& h : planes) {
-        region = sure_clip(region, h);
-        if (region.size() < 3) return true;
-      }
+      const VertexId v = notches_[n.notch];
+      out[k] = {vertex(v), vertex(next(v)), lower(n), upper(n), vertex(transition(n.notch, ahead)),
+                vertex(transition(n.notch, behind))};
     }
-    return sure_sign(approx_twice_area(region)) <= 0;
-  } catch (const CGAL::Uncertain_conversion_exception&) {
-    return false;
+    return out;
+  };
+  {
+    CGAL::Protect_FPU_rounding<true> upwards;
+    try {
+      const auto approximate = sides([&](VertexId u) { return IPoint(p_[u].x(), p_[u].y()); },
+                                     [](const Joint& n) { return n.lower_approx; }, [](const Joint& n) { return n.upper_approx; });
+      if (region_of(approximate).empty()) return {};
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+    }
   }
+  return region_of(sides([&](VertexId u) { return at(u); }, [](const Joint& n) { return n.lower; },
+                         [](const Joint& n) { return n.upper; }));
 }
 
 // The region's point is the Steiner point: condition 3 of Theorem 14 follows from the views that

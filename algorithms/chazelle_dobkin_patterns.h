@@ -49,8 +49,9 @@
 //     and every triple of bare notches and branches on 2,080 polygons, 872,436 candidates, collinear
 //     vertices included; no edge failed.)
 //   - Filter (not in the thesis; it changes no answer): the region is first computed in interval
-//     arithmetic, which gives up at the first sign it cannot settle; when it settles every sign, its
-//     branches are the exact computation's, so the region it finds empty is empty. Most triples end
+//     arithmetic, by the same code as the exact one (one template on both kernels), which gives up at
+//     the first sign it cannot settle; when it settles every sign, its branches are the exact
+//     computation's, so the region it finds empty is empty. Most triples end
 //     there without rational arithmetic (on random n = 2000, r = 200, 98% of 1.3M, and every triple
 //     on spiral r = 198): chazelle-dobkin 14.2 s -> 3.2 s and 9.5 s -> 1.5 s on those inputs.
 //   - Steiner points whose region has no interior (patterns that exist only in degenerate position,
@@ -79,6 +80,9 @@
 #include "algorithms/boundary_chains.h"
 #include "core/registry.h"
 
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Simple_cartesian.h>
+
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -97,6 +101,9 @@ struct AdaptedNotch {
   QPoint backward;    // a point of the backward arm other than the notch
 };
 
+// Points with interval coordinates, for filters in front of exact computations.
+using IntervalKernel = CGAL::Simple_cartesian<CGAL::Interval_nt<false>>;
+
 // The directions allowed at a notch for its edge to a Steiner point: the open cone of the X with
 // orient(v, lower, X) > 0 and orient(v, upper, X) < 0, less than 180 degrees wide (or a half-plane).
 struct Joint {
@@ -104,8 +111,8 @@ struct Joint {
 
   std::size_t notch;
   QPoint lower, upper;
-  // Intervals around lower's and upper's coordinates (x, y, x, y), for the filter of the X3 test.
-  std::array<CGAL::Interval_nt<false>, 4> approx_arms;
+  // lower and upper on intervals, for the filter of the X3 test.
+  IntervalKernel::Point_2 lower_approx, upper_approx;
 };
 
 class Patterns {
@@ -185,7 +192,6 @@ class Patterns {
   void compute_bare_cones();
   Joint cone(const AdaptedNotch& a) const;
   std::vector<QPoint> x3_region(const std::array<const Joint*, 3>& joints) const;
-  bool x3_region_surely_empty(const std::array<const Joint*, 3>& joints) const;
   std::optional<QPoint> found(const QPoint& s);
   const std::optional<QPoint>& tip(std::size_t a, std::size_t b);
 
