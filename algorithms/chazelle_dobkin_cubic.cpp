@@ -53,9 +53,11 @@
 // (5) The scan, per interval and per choice of G and H (4 runs, so with the two rays of q and of m all
 //     16 configurations): the queries (outer q, both rays, in order along G) and the inserts (tight
 //     inner m, both rays) that pass their unary conditions are merged along G; inserts with
-//     u_M x u_G > 0 enter an ordered set (keyed by Y's rank along H) in a forward pass, those with
+//     u_M x u_G > 0 enter a set kept in order of Y's rank along H in a forward pass, those with
 //     u_M x u_G < 0 in a backward pass, those parallel (P2 constant true) in one set, each query being
-//     answered before inserts of its own rank (strictness). The P2-feasible Y of a query are then
+//     answered before inserts of its own rank (strictness). The set is a linked list whose insertion
+//     points are found offline (Inserted in chazelle_dobkin_tables.h), and the orders along G and H
+//     are counting sorts of ranks, so a scan is O(r) besides its P4 tests. The P2-feasible Y of a query are then
 //     exactly the set; P1 makes them a range from one end of it, walked from that end while P1 holds,
 //     testing P4 on each until one passes. Soundness: every witness satisfies all of (4), which
 //     chosen() checks again in full before the layout (a failure throws: it would be a bug).
@@ -84,17 +86,16 @@
 //   (proven: P's interior is simply connected), but its ends need the hourglass between the two rays,
 //   not built. Counter "x4_p4_tests": in the reference run 186,315 tests found 124,920 patterns, so
 //   most walks end at their first test.
-// - The ordered set (a std::set) makes the scan O(r log r) per interval, not O(r).
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
 //   superranges; see chazelle_dobkin_patterns.h).
 //
 // Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists; STEPs 2 and 4
 // O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
-// O(r^3) lookups; the scans O(r^3 log r) list steps plus the P4 tests, O(r log(n/r)) each, at most one
+// O(r^3) lookups; the scans O(r^3) list steps plus the P4 tests, O(r log(n/r)) each, at most one
 // per interval and loose points X, Y, at least one per witness. Worst case (every P4 test failing)
-// O(n log n + n r + r^5 log(n/r)), as chazelle-dobkin-n5; when a walk ends after O(1) tests,
-// O(n log n + n r + r^3 log r + r^3 log(n/r)) (the scans, and one P4 test per interval). Space
+// O(n log n + n r + r^5 log(n/r)), as chazelle-dobkin-n5; when every walk ends at its first test,
+// O(r^3) tests (O(r) walks per interval), so O(n log n + n r + r^4 log(n/r)). Space
 // O(n + r^3) (a row per interval with a witness) plus O(r^2) rationals for the lists. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
 // convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
 //

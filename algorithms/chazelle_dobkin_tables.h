@@ -12,7 +12,6 @@
 #include <array>
 #include <cstdint>
 #include <optional>
-#include <set>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -211,7 +210,47 @@ class ProgramCubic final : public Program {
   struct Insert {
     int ray, along, at;  // M, the rank along G where M's line crosses it, and Y's rank along H
   };
-  using Inserted = std::set<std::pair<int, int>>;  // (Y's rank along H, M)
+
+  // The Y inserted so far in one pass of a scan, in order along H (by rank, then by ray): a doubly
+  // linked list over the pass's inserts. Where each insert goes is found beforehand, offline: its
+  // neighbours at its insertion are its neighbours in the full list once every insert after it is
+  // unlinked, so unlinking them all in reverse order of insertion finds every one of them in O(1).
+  // A pass is then O(inserts) in all (an ordered set would be O(log r) per insert).
+  class Inserted {
+   public:
+    // `by_at`: this pass's inserts (positions into the scan's inserts, at most `inserts`) in order
+    // along H; `order`: the same positions in the order they will be inserted.
+    Inserted(std::size_t inserts, const std::vector<int>& by_at, const std::vector<int>& order)
+        : prev_(inserts + 2), next_(inserts + 2), left_(inserts), right_(inserts) {
+      int last = head();
+      for (int k : by_at) {
+        link(last, k);
+        last = k;
+      }
+      link(last, tail());
+      for (auto k = order.rbegin(); k != order.rend(); ++k) {
+        left_[*k] = prev_[*k];
+        right_[*k] = next_[*k];
+        link(prev_[*k], next_[*k]);
+      }
+    }
+    void insert(int k) {
+      link(left_[k], k);
+      link(k, right_[k]);
+    }
+    bool empty() const { return next_[head()] == tail(); }
+    int first() const { return next_[head()]; }
+    int last() const { return prev_[tail()]; }
+    int after(int k) const { return next_[k]; }
+    int before(int k) const { return prev_[k]; }
+    bool is_end(int k) const { return k >= head(); }
+
+   private:
+    int head() const { return static_cast<int>(left_.size()); }
+    int tail() const { return head() + 1; }
+    void link(int a, int b) { next_[a] = b, prev_[b] = a; }
+    std::vector<int> prev_, next_, left_, right_;
+  };
 
   std::size_t at(int a, int b) const { return static_cast<std::size_t>(a) * notch_count_ + b; }
 
@@ -289,18 +328,28 @@ class ProgramCubic final : public Program {
     if (!row.empty()) rows_[at(g, h)] = std::move(row);
   }
 
+  // The inserts are passed as positions into `inserts`: by_at in order along H (Y's rank, then the
+  // ray, the order of the walks), along_g in order of the rank along G where their lines cross it
+  // (-1, parallel, first). Both are counting sorts, O(r) per scan.
   void scan(int g, int h, int G, int H, Row& row) {
     const std::vector<Query> queries = open_queries(g, h, G, H, row);
     if (queries.empty()) return;
-    std::vector<Insert> inserts = usable_inserts(g, h, G, H);
+    const std::vector<Insert> inserts = usable_inserts(g, h, G, H);
     if (inserts.empty()) return;
-    std::sort(inserts.begin(), inserts.end(), [](const Insert& a, const Insert& b) { return a.along < b.along; });
-    sweep_forward(queries, inserts, G, H, row);
-    sweep_backward(queries, inserts, G, H, row);
-    Inserted parallel;
-    for (const Insert& m : inserts)
-      if (rays_.cross_sign(m.ray, G) == 0) parallel.insert({m.at, m.ray});
-    for (const Query& q : queries) find_visible(q, parallel, G, H, row);
+    const auto item = [&](int k) -> const Insert& { return inserts[static_cast<std::size_t>(k)]; };
+    std::vector<int> positions(inserts.size());
+    for (std::size_t k = 0; k < inserts.size(); ++k) positions[k] = static_cast<int>(k);
+    const std::size_t range = 2 * static_cast<std::size_t>(notch_count_) + 1;
+    const std::vector<int> by_ray = stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).ray); });
+    const std::vector<int> by_at = stably_ordered(by_ray, range, [&](int k) { return static_cast<std::size_t>(item(k).at); });
+    const std::vector<int> along_g =
+        stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).along + 1); });
+    sweep_forward(queries, inserts, by_at, along_g, G, H, row);
+    sweep_backward(queries, inserts, by_at, along_g, G, H, row);
+    const std::vector<int> parallel_to_g = with_cross_sign(inserts, by_at, 0, G);
+    Inserted parallel(inserts.size(), parallel_to_g, parallel_to_g);
+    for (int k : parallel_to_g) parallel.insert(k);
+    for (const Query& q : queries) find_visible(q, inserts, parallel, G, H, row);
   }
 
   // The outer notches q, in order along G, whose loose point X on G passes the conditions that do not
@@ -340,6 +389,26 @@ class ProgramCubic final : public Program {
     return out;
   }
 
+  // `positions` ordered by key (an integer in [0, range)), stably: a counting sort, O(positions + range).
+  template <class Key>
+  static std::vector<int> stably_ordered(const std::vector<int>& positions, std::size_t range, Key key) {
+    std::vector<int> first(range + 1, 0);
+    for (int k : positions) ++first[key(k) + 1];
+    for (std::size_t v = 1; v <= range; ++v) first[v] += first[v - 1];
+    std::vector<int> out(positions.size());
+    for (int k : positions) out[static_cast<std::size_t>(first[key(k)]++)] = k;
+    return out;
+  }
+
+  // Those of `positions` whose insert's line crosses G with the given sign, in the same order.
+  std::vector<int> with_cross_sign(const std::vector<Insert>& inserts, const std::vector<int>& positions, int sign,
+                                   int G) const {
+    std::vector<int> out;
+    for (int k : positions)
+      if (rays_.cross_sign(inserts[static_cast<std::size_t>(k)].ray, G) == sign) out.push_back(k);
+    return out;
+  }
+
   // Whether the segment of ray A up to its loose point with C meets ray B's segment from its notch to
   // the crossing of the two lines (with B's segment reaching past the crossing, which P1 or P2 ensures
   // in the class where this is asked).
@@ -349,51 +418,56 @@ class ProgramCubic final : public Program {
 
   // P2 for inserts whose line crosses G with cross(u_m, u_g) > 0 asks X beyond the crossing: a prefix
   // along G. Queries are answered before the inserts of the same rank (strict inequality).
-  void sweep_forward(const std::vector<Query>& queries, const std::vector<Insert>& inserts, int G, int H, Row& row) {
-    Inserted set;
+  void sweep_forward(const std::vector<Query>& queries, const std::vector<Insert>& inserts,
+                     const std::vector<int>& by_at, const std::vector<int>& along_g, int G, int H, Row& row) {
+    Inserted set(inserts.size(), with_cross_sign(inserts, by_at, 1, G), with_cross_sign(inserts, along_g, 1, G));
     std::size_t next = 0;
     for (const Query& q : queries) {
-      for (; next < inserts.size() && inserts[next].along < q.along; ++next) {
+      for (; next < along_g.size() && inserts[static_cast<std::size_t>(along_g[next])].along < q.along; ++next) {
         ++scan_steps_;
-        if (rays_.cross_sign(inserts[next].ray, G) > 0) set.insert({inserts[next].at, inserts[next].ray});
+        if (rays_.cross_sign(inserts[static_cast<std::size_t>(along_g[next])].ray, G) > 0) set.insert(along_g[next]);
       }
-      find_visible(q, set, G, H, row);
+      find_visible(q, inserts, set, G, H, row);
     }
   }
 
-  void sweep_backward(const std::vector<Query>& queries, const std::vector<Insert>& inserts, int G, int H, Row& row) {
-    Inserted set;
-    std::size_t next = inserts.size();
+  void sweep_backward(const std::vector<Query>& queries, const std::vector<Insert>& inserts,
+                      const std::vector<int>& by_at, const std::vector<int>& along_g, int G, int H, Row& row) {
+    std::vector<int> order = with_cross_sign(inserts, along_g, -1, G);
+    std::reverse(order.begin(), order.end());
+    Inserted set(inserts.size(), with_cross_sign(inserts, by_at, -1, G), order);
+    std::size_t next = along_g.size();
     for (auto q = queries.rbegin(); q != queries.rend(); ++q) {
-      for (; next > 0 && inserts[next - 1].along > q->along; --next) {
+      for (; next > 0 && inserts[static_cast<std::size_t>(along_g[next - 1])].along > q->along; --next) {
         ++scan_steps_;
-        if (rays_.cross_sign(inserts[next - 1].ray, G) < 0) set.insert({inserts[next - 1].at, inserts[next - 1].ray});
+        if (rays_.cross_sign(inserts[static_cast<std::size_t>(along_g[next - 1])].ray, G) < 0) set.insert(along_g[next - 1]);
       }
-      find_visible(*q, set, G, H, row);
+      find_visible(*q, inserts, set, G, H, row);
     }
   }
 
   // P1 bounds Y's rank along H on one side (or not at all when Q and H are parallel): walk the inserted
   // Y from the extreme inwards while P1 holds, and test P4 (XY in P) on each until one passes.
-  void find_visible(const Query& query, const Inserted& set, int G, int H, Row& row) {
+  void find_visible(const Query& query, const std::vector<Insert>& inserts, const Inserted& set, int G, int H, Row& row) {
     const int q = LooseRays::notch(query.ray);
     if (set.empty() || (!row.empty() && row[static_cast<std::size_t>(q)].inner >= 0)) return;
     const int turn = rays_.cross_sign(query.ray, H);
     const int bound = turn == 0 ? 0 : rays_.key(H, query.ray);
     const QPoint x = rays_.point(G, query.ray);
-    auto visible = [&](const std::pair<int, int>& y) {
+    auto visible = [&](const Insert& y) {
       ++scan_steps_;
       ++p4_tests_;
-      if (!patterns().inside(x, rays_.point(H, y.second))) return false;
-      record(row, q, query.ray, G, y.second, H);
+      if (!patterns().inside(x, rays_.point(H, y.ray))) return false;
+      record(row, q, query.ray, G, y.ray, H);
       return true;
     };
+    const auto y = [&](int k) -> const Insert& { return inserts[static_cast<std::size_t>(k)]; };
     if (turn >= 0) {
-      for (auto y = set.rbegin(); y != set.rend() && (turn == 0 || y->first > bound); ++y)
-        if (visible(*y)) return;
+      for (int k = set.last(); !set.is_end(k) && (turn == 0 || y(k).at > bound); k = set.before(k))
+        if (visible(y(k))) return;
     } else {
-      for (auto y = set.begin(); y != set.end() && y->first < bound; ++y)
-        if (visible(*y)) return;
+      for (int k = set.first(); !set.is_end(k) && y(k).at < bound; k = set.after(k))
+        if (visible(y(k))) return;
     }
   }
 
