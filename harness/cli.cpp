@@ -10,6 +10,7 @@
 #include "core/validate.h"
 #include "generators/family.h"
 #include "harness/large_stack.h"
+#include "harness/progress.h"
 
 #include <boost/program_options.hpp>
 
@@ -24,6 +25,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -273,9 +275,15 @@ int cmd_run(const std::vector<std::string>& args) {
   const auto compute = [&] {
     return run_output(*algo, *polygon, vm.count("json") > 0, vm.count("no-validate") == 0, vm.count("svg") > 0);
   };
-  const RunOutput result = max_seconds ? with_deadline(name, *max_seconds, compute) : compute();
-  if (vm.count("svg")) emit(result.svg, vm["svg"].as<std::string>());
-  emit(result.out, "");
+  std::optional<RunOutput> result;
+  {
+    const Heartbeat heartbeat(name + " on n = " + std::to_string(polygon->size()) + ", r = " +
+                              std::to_string(polygon->reflex_count()) +
+                              (max_seconds ? " (stops at " + double_text(*max_seconds) + " s)" : ""));
+    result = max_seconds ? with_deadline(name, *max_seconds, compute) : compute();
+  }
+  if (vm.count("svg")) emit(result->svg, vm["svg"].as<std::string>());
+  emit(result->out, "");
   return 0;
 }
 

@@ -10,6 +10,7 @@ namespace pd {
 namespace {
 
 constexpr double kLogInterval = 10;  // seconds between lines when stderr is not a terminal
+constexpr auto kHeartbeatDelay = std::chrono::seconds(2), kHeartbeatInterval = std::chrono::seconds(1);
 
 std::string clock_text(double seconds) {
   const long s = static_cast<long>(seconds + 0.5);
@@ -63,6 +64,39 @@ void Progress::show(const std::string& key, bool force) {
     std::fprintf(stderr, "%s\n", line.c_str());
   }
   std::fflush(stderr);
+}
+
+Heartbeat::Heartbeat(std::string what) : what_(std::move(what)) {
+  if (isatty(STDERR_FILENO)) thread_ = std::thread([this] { beat(); });
+}
+
+Heartbeat::~Heartbeat() {
+  if (!thread_.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  stop_.notify_one();
+  thread_.join();
+}
+
+void Heartbeat::beat() {
+  const auto start = std::chrono::steady_clock::now();
+  std::unique_lock<std::mutex> lock(mutex_);
+  bool drawn = false;
+  for (auto next = start + kHeartbeatDelay; !stop_.wait_until(lock, next, [this] { return stopping_; });
+       next += kHeartbeatInterval) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::string line = what_ + ": " + clock_text(seconds) + " elapsed";
+    line.resize(std::min(line.size(), terminal_width() - 1));
+    std::fprintf(stderr, "\r\033[K%s", line.c_str());
+    std::fflush(stderr);
+    drawn = true;
+  }
+  if (drawn) {
+    std::fputs("\r\033[K", stderr);
+    std::fflush(stderr);
+  }
 }
 
 }  // namespace pd

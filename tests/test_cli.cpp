@@ -182,6 +182,23 @@ TEST_F(Cli, MaxSecondsStopsASlowRunWithOneErrorLine) {
   EXPECT_FALSE(fs::exists(svg));
 }
 
+// A run that lasts shows on a terminal what runs and for how long, and erases that line when it ends;
+// off a terminal, stderr holds only the contract's error line. util-linux's `script` gives the run a
+// terminal.
+TEST_F(Cli, ShowsHowLongARunTakesOnATerminalOnly) {
+  if (std::system("script --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "no `script` (util-linux) for a terminal";
+  const fs::path poly = dir_ / "big.txt", log = dir_ / "terminal.log";
+  ASSERT_EQ(cli("generate --family random --n 3000 --reflex 10 -o " + poly.string()).status, 0);
+  const std::string run = std::string(PD_CLI) + " run --algorithm diagonal-n4 --max-seconds 3.5 --input " + poly.string();
+  ASSERT_NE(std::system(("script -qec '" + run + "' /dev/null >" + log.string() + " 2>&1 </dev/null").c_str()), -1);
+  const std::string terminal = slurp(log);
+  EXPECT_NE(terminal.find("\r\033[Kdiagonal-n4 on n = 3000, r = 10 (stops at 3.5 s): 0:02 elapsed"), std::string::npos)
+      << terminal;
+  EXPECT_NE(terminal.find("\r\033[Kerror: diagonal-n4 stopped after 3.5 s (--max-seconds)"), std::string::npos) << terminal;
+  expect_error("run --algorithm diagonal-n4 --max-seconds 2.5 --input " + poly.string(), 4,
+               "diagonal-n4 stopped after 2.5 s (--max-seconds)");
+}
+
 TEST_F(Cli, MaxSecondsKeepsAFinishedRunsOutput) {
   const fs::path poly = file("l.txt", "0 0\n4 0\n4 2\n2 2\n2 4\n0 4\n"), svg = dir_ / "l.svg";
   const Result plain = cli("run --algorithm hertel-mehlhorn --input " + poly.string());
