@@ -57,9 +57,9 @@
 //     u_M x u_G < 0 in a backward pass, those parallel (P2 constant true) in one set, each query being
 //     answered before inserts of its own rank (strictness). The set is a linked list whose insertion
 //     points are found offline (Inserted in chazelle_dobkin_tables.h), and the orders along G and H
-//     are counting sorts of ranks, so a scan is O(r) besides its P4 tests. The P2-feasible Y of a query are then
-//     exactly the set; P1 makes them a range from one end of it, walked from that end while P1 holds,
-//     testing P4 on each until one passes. Soundness: every witness satisfies all of (4), which
+//     are counting sorts of ranks, so a scan is O(r) besides its P4 tests. The P2-feasible Y of a
+//     query are then exactly the set; P1 makes them a range from one end of it, walked from that end
+//     while P1 holds, testing P4 on each until one passes. Soundness: every witness satisfies all of (4), which
 //     chosen() checks again in full before the layout (a failure throws: it would be a bug).
 //     Completeness over loose pairs: by (4), every loose pair with the four conditions is reached by
 //     the walk of its query before the walk stops, unless the walk stopped at an earlier witness.
