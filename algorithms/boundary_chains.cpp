@@ -121,14 +121,17 @@ SegmentSearch::SegmentSearch(const Polygon& p, const std::vector<QPoint>& exact)
   std::vector<VertexId> notches;
   split_into_chains(p, notches, chains_);
   if (chains_.empty() && p.size() >= 3) chains_.push_back(whole_boundary(p));
-  for (const Chain& c : chains_) {
-    CGAL::Bbox_2 box = p[chain_vertex(p, c, 0)].bbox();
-    for (std::size_t j = 1; j <= c.edges; ++j) box += p[chain_vertex(p, c, j)].bbox();
-    boxes_.push_back(box);
+  while (leaves_ < chains_.size()) leaves_ *= 2;
+  boxes_.assign(2 * leaves_, CGAL::Bbox_2());
+  for (std::size_t k = 0; k < chains_.size(); ++k) {
+    const Chain& c = chains_[k];
+    CGAL::Bbox_2& box = boxes_[leaves_ + k];
+    for (std::size_t j = 0; j <= c.edges; ++j) box += p[chain_vertex(p, c, j)].bbox();
   }
+  for (std::size_t i = leaves_ - 1; i >= 1; --i) boxes_[i] = boxes_[2 * i] + boxes_[2 * i + 1];
 }
 
-// The chain's edges, other than those at `skip`, searched in at most three ranges.
+// Descends the hierarchy from its root into the nodes whose box can meet the segment.
 bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId skip) {
   s_ = &s, t_ = &t;
   st_ = Segment(s, t);
@@ -138,26 +141,53 @@ bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId sk
   const Interval tx(CGAL::to_interval(t.x())), ty(CGAL::to_interval(t.y()));
   const CGAL::Bbox_2 around(std::min(sx_.inf(), tx.inf()), std::min(sy_.inf(), ty.inf()), std::max(sx_.sup(), tx.sup()),
                             std::max(sy_.sup(), ty.sup()));
-  const std::size_t n = p_.size();
-  for (std::size_t k = 0; k < chains_.size(); ++k) {
+  std::size_t pending[64] = {1};  // a path's worth of right siblings: the depth is below 64
+  std::size_t size = 1;
+  while (size > 0) {
+    const std::size_t i = pending[--size];
     ++steps_;
-    if (!CGAL::do_overlap(around, boxes_[k])) continue;
-    const Chain& c = chains_[k];
-    chain_ = &c;
-    std::size_t skipped[2] = {c.edges, c.edges};  // the chain's own numbers of the edges left out
-    if (skip != kNoVertex) {
-      skipped[0] = (p_.prev(skip) + n - c.start) % n, skipped[1] = (skip + n - c.start) % n;
-      std::sort(skipped, skipped + 2);
+    if (!box_meets(boxes_[i], around)) continue;
+    if (i >= leaves_) {
+      if (chain_meets(i - leaves_, skip)) return true;
+      continue;
     }
-    std::size_t lo = 0;
-    for (const std::size_t local : skipped) {
-      if (local >= c.edges) break;
-      if (lo < local && range_meets(lo, local)) return true;
-      lo = local + 1;
-    }
-    if (lo < c.edges && range_meets(lo, c.edges)) return true;
+    pending[size++] = 2 * i + 1;
+    pending[size++] = 2 * i;
   }
   return false;
+}
+
+// Whether the box can meet the segment: it meets the segment's box and its corners are not settled
+// strictly on one side of the segment's line.
+bool SegmentSearch::box_meets(const CGAL::Bbox_2& box, const CGAL::Bbox_2& around) const {
+  if (!CGAL::do_overlap(around, box)) return false;
+  CGAL::Protect_FPU_rounding<true> upwards;
+  const Interval low_x = Interval(box.xmin()) - sx_, high_x = Interval(box.xmax()) - sx_;
+  const Interval low_y = Interval(box.ymin()) - sy_, high_y = Interval(box.ymax()) - sy_;
+  const int sides[4] = {settled_sign(ux_ * low_y - uy_ * low_x), settled_sign(ux_ * low_y - uy_ * high_x),
+                        settled_sign(ux_ * high_y - uy_ * low_x), settled_sign(ux_ * high_y - uy_ * high_x)};
+  for (const int side : sides)
+    if (side != sides[0] || (side != 1 && side != -1)) return true;
+  return false;
+}
+
+// Whether chain k, the edges at `skip` left out, meets the segment.
+bool SegmentSearch::chain_meets(std::size_t k, VertexId skip) {
+  const std::size_t n = p_.size();
+  const Chain& c = chains_[k];
+  chain_ = &c;
+  std::size_t skipped[2] = {c.edges, c.edges};  // the chain's own numbers of the edges left out
+  if (skip != kNoVertex) {
+    skipped[0] = (p_.prev(skip) + n - c.start) % n, skipped[1] = (skip + n - c.start) % n;
+    std::sort(skipped, skipped + 2);
+  }
+  std::size_t lo = 0;
+  for (const std::size_t local : skipped) {
+    if (local >= c.edges) break;
+    if (lo < local && range_meets(lo, local)) return true;
+    lo = local + 1;
+  }
+  return lo < c.edges && range_meets(lo, c.edges);
 }
 
 // Whether edges lo..hi-1 of the chain meet the segment: the chain is cut where its direction passes

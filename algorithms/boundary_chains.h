@@ -110,9 +110,13 @@ void split_into_chains(const Polygon& p, std::vector<VertexId>& notches, std::ve
 // for all of them. Each chain is cut where its direction passes the segment's and the opposite one, into
 // at most three runs along which the signed distance to the segment's line is monotone; a binary search
 // in each finds the only edges that can reach the line, which are then tested exactly. The signs are
-// settled in interval arithmetic where it can, else in rationals: every answer is exact. A chain whose
-// bounding box the segment's misses is passed over in O(1): the O(r) bound stays, the searches run
-// only on the chains near the segment.
+// settled in interval arithmetic where it can, else in rationals: every answer is exact. The chains'
+// bounding boxes form a balanced hierarchy over the chains in boundary order (consecutive chains lie
+// close together), each node's box holding its children's; a search descends only into the nodes
+// whose box meets the segment's box and straddles its line, so it visits O(log r) nodes per chain
+// near the segment instead of passing every chain's box. A node is passed over only when the
+// interval arithmetic settles that it misses the segment, so the pruning never changes an answer.
+// The worst case stays O(r log(n/r)) per segment, when the segment passes near every chain.
 class SegmentSearch {
  public:
   // `exact` holds p's vertices as rationals.
@@ -137,11 +141,17 @@ class SegmentSearch {
   bool range_meets(std::size_t lo, std::size_t hi);
   bool run_meets(std::size_t lo, std::size_t hi);
   bool meets(std::size_t from, std::size_t to);
+  bool chain_meets(std::size_t k, VertexId skip);
+  bool box_meets(const CGAL::Bbox_2& box, const CGAL::Bbox_2& around) const;
 
   const Polygon& p_;
   const std::vector<QPoint>& exact_;
   std::vector<Chain> chains_;
-  std::vector<CGAL::Bbox_2> boxes_;  // each chain's, from its input vertices
+  // The hierarchy, in heap order: node 1 is the root, node i has children 2i and 2i + 1, and leaf
+  // `leaves_ + k` is chain k's box (from its input vertices); leaves past the last chain hold the
+  // empty box, which meets nothing.
+  std::size_t leaves_ = 1;
+  std::vector<CGAL::Bbox_2> boxes_;
   const Chain* chain_ = nullptr;
   // The segment of the current search, its direction u = t - s, and intervals around s and u that
   // settle most signs in floating point.

@@ -176,8 +176,8 @@ class Patterns {
   bool inside(const QPoint& s, const QPoint& t) const;
 
   // Counts "x2_tests", "x2_found", "x3_tests", "x3_found", "x4_tests", "x4_found", "tips" (computed),
-  // "tips_found" (that exist), "segment_search_steps" (binary-search steps and edges tested by sees
-  // and inside).
+  // "tips_found" (that exist), "segment_search_steps" (boxes of the chains' hierarchy visited,
+  // binary-search steps and vertices tested by sees and inside).
   void report(Counters& counters) const;
 
  private:
