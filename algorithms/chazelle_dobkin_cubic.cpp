@@ -88,7 +88,12 @@
 //   ends need the hourglass between the two rays, not built. On random n = 2000 (seed 1) a test costs
 //   57, 45, 43 and 36 steps at r = 25, 50, 100 and 200 ("segment_search_steps" per "x4_p4_tests"; a
 //   pass over every chain's box cost 70-270 and grew with r). Counter "x4_p4_tests": in the reference
-//   run 186,315 tests found 124,920 patterns, so most walks end at their first test.
+//   run 3,097,116 tests found 1,667,369 patterns, so most walks end at their first test. Not on
+//   notch-heavy: there a walk that finds nothing tests every candidate in P1's range (17.6 tests on
+//   average at n = 200, r = 197; 32.8 at n = 400, r = 397; seed 1), and tests per pattern found grow
+//   from 1.2 at r = 47 to 3.3 at r = 397, so "x4_p4_tests" fits r^3.56 there (results/bounds.md).
+//   A P4 that told on which side of the interval seen from X a failing Y lies (the boundary arc
+//   between G and H that XY meets first tells it) would stop such walks; not built.
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
 //   superranges; see chazelle_dobkin_patterns.h).
