@@ -55,7 +55,18 @@
 // 2-3% more. Measured there and not kept: reading the edges' endpoints from the polygon instead of
 // their records (7% slower), one record for an endpoint's point node and the segment node under it
 // (a sixth fewer cells, no faster), lookahead depths 4-10 or two steps per insertion, 8-32 tracers,
-// tracing rounds split into a pass of reads and a pass of steps (all within the noise).
+// tracing rounds split into a pass of reads and a pass of steps (all within the noise). Also measured
+// and not kept: the cells in chunks of 2^15 (1 MiB), found through a table of chunk addresses, in place
+// of the one array reserved for 8n cells. glibc maps a block above its mmap threshold (at most 32 MiB)
+// afresh and unmaps it when it is freed, so at n = 10^6 the one array costs about 70k page faults in
+// every call, while chunks come from the heap and later calls reuse them (`perf stat -e page-faults`,
+// random r = n/4, runs that also generate and validate: 217k for one call and 505k for five; with
+// chunks 136k for one and 187k for six). In the paper sweep's setting (one call per key, after
+// cgal-cdt's; 3-5 interleaved rounds) most keys at n = 10^6 were 5-12% faster, random r = n/4 6-8%, but
+// not every key in every run (random and spiral r = 16 16-25% slower in one run of all families), and
+// at n = 10^5 most keys were slower, notch-heavy in all three runs (14-44%). How much heap memory a
+// call finds to reuse depends on what ran before it; at 10^5, where the cells fit in the cache, the
+// table's extra load on every step may also cost more than the faults save.
 #include "algorithms/monotone.h"
 
 #include <array>
