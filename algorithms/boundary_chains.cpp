@@ -162,13 +162,16 @@ bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId sk
 bool SegmentSearch::box_meets(const CGAL::Bbox_2& box, const CGAL::Bbox_2& around) const {
   if (!CGAL::do_overlap(around, box)) return false;
   CGAL::Protect_FPU_rounding<true> upwards;
-  const Interval low_x = Interval(box.xmin()) - sx_, high_x = Interval(box.xmax()) - sx_;
-  const Interval low_y = Interval(box.ymin()) - sy_, high_y = Interval(box.ymax()) - sy_;
-  const int sides[4] = {settled_sign(ux_ * low_y - uy_ * low_x), settled_sign(ux_ * low_y - uy_ * high_x),
-                        settled_sign(ux_ * high_y - uy_ * low_x), settled_sign(ux_ * high_y - uy_ * high_x)};
+  const int sides[4] = {settled_sign(line_side(box.xmin(), box.ymin())), settled_sign(line_side(box.xmax(), box.ymin())),
+                        settled_sign(line_side(box.xmin(), box.ymax())), settled_sign(line_side(box.xmax(), box.ymax()))};
   for (const int side : sides)
     if (side != sides[0] || (side != 1 && side != -1)) return true;
   return false;
+}
+
+// cross(u, (x, y) - s) in interval arithmetic, for a point of the input. Pre: rounding upwards.
+SegmentSearch::Interval SegmentSearch::line_side(double x, double y) const {
+  return ux_ * (Interval(y) - sy_) - uy_ * (Interval(x) - sx_);
 }
 
 // Whether chain k, the edges at `skip` left out, meets the segment.
@@ -256,7 +259,7 @@ int SegmentSearch::side(std::size_t j) {
   int sign;
   {
     CGAL::Protect_FPU_rounding<true> upwards;
-    sign = settled_sign(ux_ * (Interval(v.y()) - sy_) - uy_ * (Interval(v.x()) - sx_));
+    sign = settled_sign(line_side(v.x(), v.y()));
   }
   return sign != kUnsettled ? sign : orient(*s_, *t_, x(j));
 }

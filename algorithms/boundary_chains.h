@@ -143,6 +143,7 @@ class SegmentSearch {
   bool meets(std::size_t from, std::size_t to);
   bool chain_meets(std::size_t k, VertexId skip);
   bool box_meets(const CGAL::Bbox_2& box, const CGAL::Bbox_2& around) const;
+  Interval line_side(double x, double y) const;
 
   const Polygon& p_;
   const std::vector<QPoint>& exact_;
