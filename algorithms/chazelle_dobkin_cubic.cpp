@@ -55,14 +55,41 @@
 //     inner m, both rays) that pass their unary conditions are merged along G; inserts with
 //     u_M x u_G > 0 enter a set kept in order of Y's rank along H in a forward pass, those with
 //     u_M x u_G < 0 in a backward pass, those parallel (P2 constant true) in one set, each query being
-//     answered before inserts of its own rank (strictness). The set is a linked list whose insertion
-//     points are found offline (Inserted in chazelle_dobkin_tables.h), and the orders along G and H
-//     are counting sorts of ranks, so a scan is O(r) besides its P4 tests. The P2-feasible Y of a
-//     query are then exactly the set; P1 makes them a range from one end of it, walked from that end
-//     while P1 holds, testing P4 on each until one passes. Soundness: every witness satisfies all of (4), which
-//     chosen() checks again in full before the layout (a failure throws: it would be a bug).
+//     answered before inserts of its own rank (strictness). The set is a bitset of the places along H
+//     under summary words (PlaceSet in chazelle_dobkin_tables.h: at most 3 word operations per insert
+//     or nearest member for 32767 notches), and the orders along G and H are counting sorts of ranks,
+//     so a scan is O(r) besides its walks. The P2-feasible Y of a query are then exactly the set; P1
+//     makes them a range from one end of it, and the query's witness is the first Y of that range, in
+//     order from that end, that passes P4: the walk. Soundness: every witness satisfies all of (4),
+//     which chosen() checks again in full before the layout (a failure throws: it would be a bug).
 //     Completeness over loose pairs: by (4), every loose pair with the four conditions is reached by
 //     the walk of its query before the walk stops, unless the walk stopped at an earlier witness.
+// (6) The walks of a pass share what they learn (not in the OCR text, whose "2-way scans" stop before
+//     saying how; proven here). G and H are the open clipped rays, in int P; X on G, Y on H; along a
+//     pass X moves one way along G. A walk may skip a Y only where (a) or (b) proves that X cannot see
+//     it, so it stops at the same Y as a walk testing every Y in turn (the test
+//     CarriedOverWalksFindTheWitnessesOfWalksAlone holds every row of both to each other).
+//     (a) G and H cross at c. For X, Y other than c, XY lies in int P iff the closed triangle X c Y
+//         does: Xc and cY lie in G and H, so if XY lies in int P the triangle's boundary does, and so
+//         does the triangle, P being simply connected. The triangle only grows as X or Y moves away
+//         from c along its ray. So on each side of c the Y that X sees are those between c and a
+//         threshold: beyond c only the first Y of a walk need be tested, and on the walk's own side
+//         (c included) the seen Y are the last ones. While X moves towards c, every Y an earlier X saw
+//         stays seen: the walk tests backwards from the nearest such Y while the tests pass. While X
+//         moves away from c, a Y an earlier X did not see stays unseen: the walk starts after it.
+//     (b) G and H apart. XY then lies in the region R of P between G and H. Y lies strictly right of
+//         the line of G and X strictly right of that of H (4), so R lies right of both rays and its
+//         boundary, clockwise, runs along G from z_g, an arc, along H from z_h, an arc. Let s and t be
+//         the parameters along G and H from their notches. If X1 sees Y1 and X2 sees Y2 with
+//         s1 < s2 and t1 > t2, then X1 X2 Y2 Y1 is a simple quadrilateral (X2 and Y2 lie on the part
+//         of R that X1Y1 cuts off beyond X1 and before Y1, so X2Y2 cannot cross X1Y1), convex (each
+//         corner has a side along G or H with the other side strictly right of its line), and its
+//         boundary lies in int P, so all of it does: every X between X1 and X2 sees every Y between
+//         Y2 and Y1. So what X sees moves up along H as X moves up along G, and, for a walk whose seen
+//         Y move away from its start along the pass: if X does not see Y but X or an earlier X saw a
+//         Y' at or after Y, no later X sees Y or a Y before it (the walk starts after the last such
+//         Y). For a walk whose seen Y move back towards its start: if X does not see Y but an earlier
+//         X saw a Y' at or before Y, neither X nor a later X sees Y or a Y after it (the walk stops).
 // Proven: every witness is an X4-pattern, so the output is always a valid decomposition, with at most
 // the optimum's patterns. Assumed, not proven (call it A18'): whenever a tight X4-pattern in
 // chazelle-dobkin-n5's sense (tips of Q, Theorem 15) exists, some loose one on tight notches exists too
@@ -83,32 +110,30 @@
 // Deviations.
 // - P4 is tested as a segment search on the boundary's convex chains (algorithms/boundary_chains.h:
 //   a hierarchy of their bounding boxes, then binary searches on the chains near XY), O(r log(n/r))
-//   per test in the worst case, rather than in O(1): the thesis's text stops before saying how. The
-//   part of the list that X sees is one interval (proven: P's interior is simply connected), but its
-//   ends need the hourglass between the two rays, not built. On random n = 2000 (seed 1) a test costs
-//   57, 45, 43 and 36 steps at r = 25, 50, 100 and 200 ("segment_search_steps" per "x4_p4_tests"; a
-//   pass over every chain's box cost 70-270 and grew with r). Counter "x4_p4_tests": in the reference
-//   run 3,097,116 tests found 1,667,369 patterns, so most walks end at their first test. Not on
-//   notch-heavy: there a walk that finds nothing tests every candidate in P1's range (17.6 tests on
-//   average at n = 200, r = 197; 32.8 at n = 400, r = 397; seed 1), and tests per pattern found grow
-//   from 1.2 at r = 47 to 3.3 at r = 397, so "x4_p4_tests" fits r^3.56 there (results/bounds.md).
-//   Those failing Y lie before the interval that X sees, on the side the walk comes from (notch-heavy
-//   n = 200, seed 1, each told by the boundary arc between G and H that XY meets first: no walk
-//   passed the interval). Stopping a walk that passes it therefore saves nothing there
-//   (on random n = 2000, r = 200 it saved 37% of the tests, and cost more time in exact first
-//   contacts than it saved); what would is skipping ahead to the interval: a search over the
-//   positions along H, or a pointer if the interval's ends move monotonically as X moves along G
-//   (true for crossing G and H, not proven otherwise). Not built.
+//   per test in the worst case, rather than in O(1): the thesis's text stops before saying how. On
+//   random n = 2000 (seed 1) a test costs 57, 45, 43 and 36 steps at r = 25, 50, 100 and 200
+//   ("segment_search_steps" per "x4_p4_tests").
+// - The walks of (6) reach O(1) amortized tests per query for crossing rays only (a pass tests O(r)
+//   Y besides at most two per query). For rays apart, a walk whose seen Y move away from its start
+//   that finds no witness tests every Y past the furthest Y seen so far, and a walk whose seen Y move
+//   back every Y before the nearest seen so far: O(r) per query in the worst case, as without (6).
+//   Bounding those needs the ends of the interval X sees (the hourglass of G and H), not built.
+//   Measured, seed 1, walks each alone (Walks::kEachAlone) against (6), "x4_p4_tests": notch-heavy
+//   n = 50, 100, 200, 400: 3,870 / 3,517; 49,877 / 35,867; 557,553 / 316,259; 7,514,640 / 2,853,715
+//   for 3,262, 31,442, 270,966 and 2,279,469 witnesses (at r = 397, 3.30 tests per witness became
+//   1.25); random n = 2000, r = 100 and 200: 9,050 / 8,160 and 82,454 / 69,449 for 4,467 and 29,758
+//   witnesses, most of the failing tests left being in walks of rays apart that find nothing.
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
 //   superranges; see chazelle_dobkin_patterns.h).
 //
 // Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists; STEPs 2 and 4
 // O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
-// O(r^3) lookups; the scans O(r^3) list steps plus the P4 tests, O(r log(n/r)) each, at most one
-// per interval and loose points X, Y, at least one per witness. Worst case (every P4 test failing)
-// O(n log n + n r + r^5 log(n/r)), as chazelle-dobkin-n5; when every walk ends at its first test,
-// O(r^3) tests (O(r) walks per interval), so O(n log n + n r + r^4 log(n/r)). Space
+// O(r^3) lookups; the scans O(r^3) list steps (a PlaceSet operation is O(1) for r < 32768) plus the
+// P4 tests, O(r log(n/r)) each: O(r) per pass and at most two per query for crossing rays, O(r) per
+// query for rays apart in the worst case. Worst case O(n log n + n r + r^5 log(n/r)), as
+// chazelle-dobkin-n5; when the walks of rays apart test O(1) Y each, O(r^3) tests (O(r) queries per
+// interval), so O(n log n + n r + r^4 log(n/r)). Space
 // O(n + r^3) (a row per interval with a witness) plus O(r^2) rationals for the lists. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
 // convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
 //

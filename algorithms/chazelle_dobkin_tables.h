@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -56,7 +57,9 @@ class LooseRays {
   int base_side(int a, int b) const { return base_side_[cell(a, b)]; }
   // Whether the lines of a and b meet strictly inside both clipped rays (a loose point, the thesis's
   // A_ik) and the notches of a and b, seen from it, turn counter-clockwise.
-  bool opens(int a, int b) const { return opens_[cell(a, b)] != 0; }
+  bool opens(int a, int b) const { return opens_[cell(a, b)] == kOpens; }
+  // Whether the lines of a and b meet strictly inside both clipped rays: the two open segments cross.
+  bool loose(int a, int b) const { return opens_[cell(a, b)] != kApart; }
   // The loose points on a, in order along it: the rays b whose lines meet a's strictly inside both.
   const std::vector<int>& along(int a) const { return along_[a]; }
   QPoint point(int a, int b) const {
@@ -70,6 +73,9 @@ class LooseRays {
   using Vec = ExactKernel::Vector_2;
 
   static int compare(int a, int b) { return a < b ? -1 : (a > b ? 1 : 0); }
+  // opens_ per pair: not a loose point, a loose point, or a loose point where the notches turn
+  // counter-clockwise.
+  enum : std::int8_t { kApart, kLoose, kOpens };
 
   std::size_t cell(int a, int b) const { return static_cast<std::size_t>(a) * count_ + b; }
 
@@ -135,7 +141,7 @@ class LooseRays {
       const Rational &s = meet[cell(a, b)], &t = meet[cell(b, a)];
       if (s <= 0 || s >= reach_[a] || t <= 0 || t >= reach_[b]) continue;
       const QPoint x = origin_[a] + s * direction_[a];
-      opens_[cell(a, b)] = orient(x, origin_[a], origin_[b]) > 0;
+      opens_[cell(a, b)] = orient(x, origin_[a], origin_[b]) > 0 ? kOpens : kLoose;
       points.push_back(b);
       loose_points_ += a < b;
     }
@@ -162,9 +168,14 @@ struct Witness {
 
 class ProgramCubic final : public Program {
  public:
-  explicit ProgramCubic(const Polygon& p)
+  // How a scan's walks go: carrying what earlier walks of a pass proved over to the later ones (the
+  // algorithm), or each walk testing every step in turn until one passes (the reference the tests hold
+  // the rows of the first against: both must find the same witness for every entry).
+  enum class Walks { kCarryOver, kEachAlone };
+
+  explicit ProgramCubic(const Polygon& p, Walks walks = Walks::kCarryOver)
       : Program(p), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
-        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)) {}
+        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)), walks_(walks) {}
 
   void report(Counters& counters) const {
     counters["x4_loose_points"] = rays_.loose_points();
@@ -211,45 +222,110 @@ class ProgramCubic final : public Program {
     int ray, along, at;  // M, the rank along G where M's line crosses it, and Y's rank along H
   };
 
-  // The Y inserted so far in one pass of a scan, in order along H (by rank, then by ray): a doubly
-  // linked list over the pass's inserts. Where each insert goes is found beforehand, offline: its
-  // neighbours at its insertion are its neighbours in the full list once every insert after it is
-  // unlinked, so unlinking them all in reverse order of insertion finds every one of them in O(1).
-  // A pass is then O(inserts) in all (an ordered set would be O(log r) per insert).
-  class Inserted {
+  // A set of places in [0, size): a bitset under summary bitsets (a bit per nonempty word of the level
+  // below) up to a single word. Inserting, and finding the nearest member on either side of a place,
+  // take O(levels) word operations, levels = ceil(log_64 size): at most 3 for the 65534 rays of 32767
+  // notches. (A linked list with offline insertion points would be O(1), but walks resume from places
+  // that earlier walks left, which needs the nearest member of any place.)
+  class PlaceSet {
    public:
-    // `by_at`: this pass's inserts (positions into the scan's inserts, at most `inserts`) in order
-    // along H; `order`: the same positions in the order they will be inserted.
-    Inserted(std::size_t inserts, const std::vector<int>& by_at, const std::vector<int>& order)
-        : prev_(inserts + 2), next_(inserts + 2), left_(inserts), right_(inserts) {
-      int last = head();
-      for (int k : by_at) {
-        link(last, k);
-        last = k;
-      }
-      link(last, tail());
-      for (auto k = order.rbegin(); k != order.rend(); ++k) {
-        left_[*k] = prev_[*k];
-        right_[*k] = next_[*k];
-        link(prev_[*k], next_[*k]);
-      }
+    explicit PlaceSet(int size) : size_(size) {
+      std::size_t count = static_cast<std::size_t>(std::max(size, 1));
+      do {
+        count = (count + 63) / 64;
+        levels_.emplace_back(count, 0);
+      } while (count > 1);
     }
     void insert(int k) {
-      link(left_[k], k);
-      link(k, right_[k]);
+      for (auto& level : levels_) {
+        level[static_cast<std::size_t>(k >> 6)] |= std::uint64_t{1} << (k & 63);
+        k >>= 6;
+      }
     }
-    bool empty() const { return next_[head()] == tail(); }
-    int first() const { return next_[head()]; }
-    int last() const { return prev_[tail()]; }
-    int after(int k) const { return next_[k]; }
-    int before(int k) const { return prev_[k]; }
-    bool is_end(int k) const { return k >= head(); }
+    bool empty() const { return levels_.back()[0] == 0; }
+    // The largest member at most k, or -1.
+    int at_or_before(int k) const {
+      for (std::size_t level = 0; level < levels_.size() && k >= 0; ++level, k = (k >> 6) - 1) {
+        const std::uint64_t word = levels_[level][static_cast<std::size_t>(k >> 6)] & (~std::uint64_t{0} >> (63 - (k & 63)));
+        if (word != 0) return descend(level, (k & ~63) | highest(word), highest);
+      }
+      return -1;
+    }
+    // The smallest member at least k, or size.
+    int at_or_after(int k) const {
+      for (std::size_t level = 0; level < levels_.size() && static_cast<std::size_t>(k >> 6) < levels_[level].size();
+           ++level, k = (k >> 6) + 1) {
+        const std::uint64_t word = levels_[level][static_cast<std::size_t>(k >> 6)] & (~std::uint64_t{0} << (k & 63));
+        if (word != 0) return descend(level, (k & ~63) | lowest(word), lowest);
+      }
+      return size_;
+    }
 
    private:
-    int head() const { return static_cast<int>(left_.size()); }
-    int tail() const { return head() + 1; }
-    void link(int a, int b) { next_[a] = b, prev_[b] = a; }
-    std::vector<int> prev_, next_, left_, right_;
+    static int highest(std::uint64_t word) { return 63 - __builtin_clzll(word); }
+    static int lowest(std::uint64_t word) { return __builtin_ctzll(word); }
+    // From member k of `level` down to the member of the bottom level that `pick` chooses in each word.
+    int descend(std::size_t level, int k, int (*pick)(std::uint64_t)) const {
+      while (level-- > 0) k = k * 64 + pick(levels_[level][static_cast<std::size_t>(k)]);
+      return k;
+    }
+    int size_;
+    std::vector<std::vector<std::uint64_t>> levels_;
+  };
+
+  // One scan's inserts, the places of by_at (in order along H: Y's rank, then the ray, the order of the
+  // walks), and where G and H cross when their clipped rays do.
+  struct Lists {
+    int G, H;
+    std::vector<Insert> inserts;
+    std::vector<int> by_at;       // positions into inserts
+    std::vector<int> place;       // by_at inverted: the place of each insert
+    std::vector<int> below_rank;  // below_rank[v]: the places whose Y has a rank along H below v
+    bool crossing = false;
+    int crossing_on_g = -1, crossing_on_h = -1;  // the ranks of G ∩ H along G and along H
+    const Insert& at_place(int k) const { return inserts[static_cast<std::size_t>(by_at[static_cast<std::size_t>(k)])]; }
+  };
+
+  // What the walks of one pass in one direction proved for its later walks, in that direction's steps
+  // (find_visible; each field is used by one kind of walk).
+  struct Memory {
+    int seen_from = INT_MAX;      // crossing, X approaching c: every near step from here on is seen
+    int blocked_to = -1;          // no step up to here is seen (crossing with X receding, or apart)
+    int reach = -1;               // apart: the furthest step seen so far
+    int blocked_from = INT_MAX;   // apart: no step from here on is seen
+    int seen_nearest = INT_MAX;  // apart: the nearest step seen so far
+  };
+
+  // One pass of a scan: the places of the Y inserted so far and, per direction of walk, its Memory.
+  struct Pass {
+    Pass(int size, bool forward) : inserted(size), forward(forward) {}
+    PlaceSet inserted;
+    bool forward;  // queries come in increasing rank along G
+    std::array<Memory, 2> memory;  // walks down (from the top rank along H), walks up
+  };
+
+  // A walk's view of a pass: steps numbered from the end of the list the walk starts at.
+  class Walk {
+   public:
+    Walk(const PlaceSet& inserted, int size, bool down) : inserted_(inserted), size_(size), down_(down) {}
+    int place(int step) const { return down_ ? size_ - 1 - step : step; }
+    // The first inserted step at or after `step`, or size.
+    int first_from(int step) const {
+      if (!down_) return inserted_.at_or_after(step);
+      const int k = inserted_.at_or_before(size_ - 1 - step);
+      return k < 0 ? size_ : size_ - 1 - k;
+    }
+    // The last inserted step before `step`, or -1.
+    int last_before(int step) const {
+      if (!down_) return inserted_.at_or_before(step - 1);
+      const int k = inserted_.at_or_after(size_ - step);
+      return k == size_ ? -1 : size_ - 1 - k;
+    }
+
+   private:
+    const PlaceSet& inserted_;
+    int size_;
+    bool down_;
   };
 
   std::size_t at(int a, int b) const { return static_cast<std::size_t>(a) * notch_count_ + b; }
@@ -328,28 +404,34 @@ class ProgramCubic final : public Program {
     if (!row.empty()) rows_[at(g, h)] = std::move(row);
   }
 
-  // The inserts are passed as positions into `inserts`: by_at in order along H (Y's rank, then the
-  // ray, the order of the walks), along_g in order of the rank along G where their lines cross it
-  // (-1, parallel, first). Both are counting sorts, O(r) per scan.
+  // The inserts' orders are counting sorts, O(r) per scan: by_at along H (Y's rank, then the ray),
+  // along_g by the rank along G where their lines cross it (-1, parallel, first).
   void scan(int g, int h, int G, int H, Row& row) {
     const std::vector<Query> queries = open_queries(g, h, G, H, row);
     if (queries.empty()) return;
-    const std::vector<Insert> inserts = usable_inserts(g, h, G, H);
-    if (inserts.empty()) return;
-    const auto item = [&](int k) -> const Insert& { return inserts[static_cast<std::size_t>(k)]; };
-    std::vector<int> positions(inserts.size());
-    for (std::size_t k = 0; k < inserts.size(); ++k) positions[k] = static_cast<int>(k);
+    Lists lists{G, H, usable_inserts(g, h, G, H), {}, {}, {}};
+    if (lists.inserts.empty()) return;
+    const auto item = [&](int k) -> const Insert& { return lists.inserts[static_cast<std::size_t>(k)]; };
+    const int size = static_cast<int>(lists.inserts.size());
+    std::vector<int> positions(lists.inserts.size());
+    for (int k = 0; k < size; ++k) positions[static_cast<std::size_t>(k)] = k;
     const std::size_t range = 2 * static_cast<std::size_t>(notch_count_) + 1;
     const std::vector<int> by_ray = stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).ray); });
-    const std::vector<int> by_at = stably_ordered(by_ray, range, [&](int k) { return static_cast<std::size_t>(item(k).at); });
+    lists.by_at = stably_ordered(by_ray, range, [&](int k) { return static_cast<std::size_t>(item(k).at); });
     const std::vector<int> along_g =
         stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).along + 1); });
-    sweep_forward(queries, inserts, by_at, along_g, G, H, row);
-    sweep_backward(queries, inserts, by_at, along_g, G, H, row);
-    const std::vector<int> parallel_to_g = with_cross_sign(inserts, by_at, 0, G);
-    Inserted parallel(inserts.size(), parallel_to_g, parallel_to_g);
-    for (int k : parallel_to_g) parallel.insert(k);
-    for (const Query& q : queries) find_visible(q, inserts, parallel, G, H, row);
+    lists.place.resize(lists.inserts.size());
+    for (int k = 0; k < size; ++k) lists.place[static_cast<std::size_t>(lists.by_at[static_cast<std::size_t>(k)])] = k;
+    lists.below_rank.assign(range + 1, 0);
+    for (const Insert& y : lists.inserts) ++lists.below_rank[static_cast<std::size_t>(y.at) + 1];
+    for (std::size_t v = 1; v <= range; ++v) lists.below_rank[v] += lists.below_rank[v - 1];
+    if (rays_.loose(G, H)) lists.crossing = true, lists.crossing_on_g = rays_.key(G, H), lists.crossing_on_h = rays_.key(H, G);
+    sweep_forward(queries, lists, along_g, row);
+    sweep_backward(queries, lists, along_g, row);
+    Pass parallel(size, true);
+    for (int k = 0; k < size; ++k)
+      if (rays_.cross_sign(lists.at_place(k).ray, G) == 0) parallel.inserted.insert(k);
+    for (const Query& q : queries) find_visible(q, lists, parallel, row);
   }
 
   // The outer notches q, in order along G, whose loose point X on G passes the conditions that do not
@@ -400,15 +482,6 @@ class ProgramCubic final : public Program {
     return out;
   }
 
-  // Those of `positions` whose insert's line crosses G with the given sign, in the same order.
-  std::vector<int> with_cross_sign(const std::vector<Insert>& inserts, const std::vector<int>& positions, int sign,
-                                   int G) const {
-    std::vector<int> out;
-    for (int k : positions)
-      if (rays_.cross_sign(inserts[static_cast<std::size_t>(k)].ray, G) == sign) out.push_back(k);
-    return out;
-  }
-
   // Whether the segment of ray A up to its loose point with C meets ray B's segment from its notch to
   // the crossing of the two lines (with B's segment reaching past the crossing, which P1 or P2 ensures
   // in the class where this is asked).
@@ -418,57 +491,145 @@ class ProgramCubic final : public Program {
 
   // P2 for inserts whose line crosses G with cross(u_m, u_g) > 0 asks X beyond the crossing: a prefix
   // along G. Queries are answered before the inserts of the same rank (strict inequality).
-  void sweep_forward(const std::vector<Query>& queries, const std::vector<Insert>& inserts,
-                     const std::vector<int>& by_at, const std::vector<int>& along_g, int G, int H, Row& row) {
-    Inserted set(inserts.size(), with_cross_sign(inserts, by_at, 1, G), with_cross_sign(inserts, along_g, 1, G));
+  void sweep_forward(const std::vector<Query>& queries, const Lists& lists, const std::vector<int>& along_g, Row& row) {
+    Pass pass(static_cast<int>(lists.inserts.size()), true);
     std::size_t next = 0;
     for (const Query& q : queries) {
-      for (; next < along_g.size() && inserts[static_cast<std::size_t>(along_g[next])].along < q.along; ++next) {
-        ++scan_steps_;
-        if (rays_.cross_sign(inserts[static_cast<std::size_t>(along_g[next])].ray, G) > 0) set.insert(along_g[next]);
-      }
-      find_visible(q, inserts, set, G, H, row);
+      for (; next < along_g.size() && lists.inserts[static_cast<std::size_t>(along_g[next])].along < q.along; ++next)
+        admit(lists, along_g[next], 1, pass);
+      find_visible(q, lists, pass, row);
     }
   }
 
-  void sweep_backward(const std::vector<Query>& queries, const std::vector<Insert>& inserts,
-                      const std::vector<int>& by_at, const std::vector<int>& along_g, int G, int H, Row& row) {
-    std::vector<int> order = with_cross_sign(inserts, along_g, -1, G);
-    std::reverse(order.begin(), order.end());
-    Inserted set(inserts.size(), with_cross_sign(inserts, by_at, -1, G), order);
+  void sweep_backward(const std::vector<Query>& queries, const Lists& lists, const std::vector<int>& along_g, Row& row) {
+    Pass pass(static_cast<int>(lists.inserts.size()), false);
     std::size_t next = along_g.size();
     for (auto q = queries.rbegin(); q != queries.rend(); ++q) {
-      for (; next > 0 && inserts[static_cast<std::size_t>(along_g[next - 1])].along > q->along; --next) {
-        ++scan_steps_;
-        if (rays_.cross_sign(inserts[static_cast<std::size_t>(along_g[next - 1])].ray, G) < 0) set.insert(along_g[next - 1]);
-      }
-      find_visible(*q, inserts, set, G, H, row);
+      for (; next > 0 && lists.inserts[static_cast<std::size_t>(along_g[next - 1])].along > q->along; --next)
+        admit(lists, along_g[next - 1], -1, pass);
+      find_visible(*q, lists, pass, row);
     }
   }
 
-  // P1 bounds Y's rank along H on one side (or not at all when Q and H are parallel): walk the inserted
-  // Y from the extreme inwards while P1 holds, and test P4 (XY in P) on each until one passes.
-  void find_visible(const Query& query, const std::vector<Insert>& inserts, const Inserted& set, int G, int H, Row& row) {
+  // Inserts insert k into the pass when its line crosses G with the pass's sign.
+  void admit(const Lists& lists, int k, int sign, Pass& pass) {
+    ++scan_steps_;
+    if (rays_.cross_sign(lists.inserts[static_cast<std::size_t>(k)].ray, lists.G) == sign)
+      pass.inserted.insert(lists.place[static_cast<std::size_t>(k)]);
+  }
+
+  // P1 bounds Y's rank along H on one side (or not at all when Q and H are parallel): a walk takes the
+  // inserted Y from the far end of the list inwards while P1 holds, and the first that passes P4 (XY in
+  // P) is the witness. Steps [0, end) are those where P1 holds.
+  void find_visible(const Query& query, const Lists& lists, Pass& pass, Row& row) {
     const int q = LooseRays::notch(query.ray);
-    if (set.empty() || (!row.empty() && row[static_cast<std::size_t>(q)].inner >= 0)) return;
-    const int turn = rays_.cross_sign(query.ray, H);
-    const int bound = turn == 0 ? 0 : rays_.key(H, query.ray);
-    const QPoint x = rays_.point(G, query.ray);
-    auto visible = [&](const Insert& y) {
+    if (pass.inserted.empty() || (!row.empty() && row[static_cast<std::size_t>(q)].inner >= 0)) return;
+    const int turn = rays_.cross_sign(query.ray, lists.H);
+    const int size = static_cast<int>(lists.inserts.size());
+    const int bound = rays_.key(lists.H, query.ray);
+    const auto places_below = [&](int rank) { return lists.below_rank[static_cast<std::size_t>(rank)]; };
+    const int end = turn == 0 ? size : (turn > 0 ? size - places_below(bound + 1) : places_below(bound));
+    const Walk walk(pass.inserted, size, turn >= 0);
+    std::optional<QPoint> x;
+    const auto visible = [&](int step) {
       ++scan_steps_;
       ++p4_tests_;
-      if (!patterns().inside(x, rays_.point(H, y.ray))) return false;
-      record(row, q, query.ray, G, y.ray, H);
-      return true;
+      if (!x) x = rays_.point(lists.G, query.ray);
+      return patterns().inside(*x, rays_.point(lists.H, lists.at_place(walk.place(step)).ray));
     };
-    const auto y = [&](int k) -> const Insert& { return inserts[static_cast<std::size_t>(k)]; };
-    if (turn >= 0) {
-      for (int k = set.last(); !set.is_end(k) && (turn == 0 || y(k).at > bound); k = set.before(k))
-        if (visible(y(k))) return;
+    Memory& memory = pass.memory[turn >= 0 ? 0 : 1];
+    int found = -1;
+    if (walks_ == Walks::kEachAlone) {
+      found = walk_alone(walk, end, visible);
+    } else if (lists.crossing) {
+      const int c = lists.crossing_on_h;
+      const int near_end = turn >= 0 ? size - places_below(c) : places_below(c + 1);
+      const bool approaching = pass.forward ? query.along <= lists.crossing_on_g : query.along >= lists.crossing_on_g;
+      found = approaching ? walk_approaching(walk, near_end, end, memory, visible) : walk_receding(walk, near_end, end, memory, visible);
+      if (found < 0) found = walk_beyond_crossing(walk, near_end, end, visible);
     } else {
-      for (int k = set.first(); !set.is_end(k) && y(k).at < bound; k = set.after(k))
-        if (visible(y(k))) return;
+      // Apart, what X sees moves up along H as X moves up along G (header, (6)); a walk starts at the
+      // bottom when turn < 0.
+      const bool moving_away = pass.forward == (turn < 0);
+      found = moving_away ? walk_apart_moving_away(walk, end, memory, visible) : walk_apart_moving_back(walk, end, memory, visible);
     }
+    if (found >= 0) record(row, q, query.ray, lists.G, lists.at_place(walk.place(found)).ray, lists.H);
+  }
+
+  // Each inserted step in turn, until one is seen: the first seen, or -1.
+  template <class Visible>
+  static int walk_alone(const Walk& walk, int end, const Visible& visible) {
+    for (int step = walk.first_from(0); step < end; step = walk.first_from(step + 1))
+      if (visible(step)) return step;
+    return -1;
+  }
+
+  // The walks of crossing rays (header, (6)). The near steps [0, near_end), on the walk's side of c (c
+  // included), that X sees are those from a threshold t(X) on; of the steps beyond c, those up to one.
+  // Along a pass t(X) only falls while X moves towards c, and only rises while X moves away from it.
+  //
+  // X moving towards c: every near step from `seen_from` on is seen (an earlier X saw it). The walk
+  // tests the inserted steps before it, backwards, while they are seen.
+  template <class Visible>
+  static int walk_approaching(const Walk& walk, int near_end, int end, Memory& memory, const Visible& visible) {
+    int& seen_from = memory.seen_from;
+    seen_from = std::min(seen_from, near_end);
+    for (int step = walk.last_before(std::min(seen_from, end)); step >= 0 && visible(step); step = walk.last_before(step))
+      seen_from = step;
+    const int first = walk.first_from(seen_from);
+    return first < std::min(near_end, end) ? first : -1;
+  }
+
+  // X moving away from c: no step up to `blocked_to` is seen (not seen by an earlier X).
+  template <class Visible>
+  static int walk_receding(const Walk& walk, int near_end, int end, Memory& memory, const Visible& visible) {
+    for (int step = walk.first_from(memory.blocked_to + 1); step < std::min(near_end, end); step = walk.first_from(step + 1)) {
+      if (visible(step)) return step;
+      memory.blocked_to = step;
+    }
+    return -1;
+  }
+
+  // No near step is a witness: of the steps beyond c only the first can be.
+  template <class Visible>
+  static int walk_beyond_crossing(const Walk& walk, int near_end, int end, const Visible& visible) {
+    const int first = walk.first_from(near_end);
+    return first < end && visible(first) ? first : -1;
+  }
+
+  // The walks of rays apart (header, (6)), when what X sees moves away from the walk's start along the
+  // pass: a step not seen by X, with a step at or after it seen by X or an earlier X, is seen by no
+  // later X, nor is any step before it.
+  template <class Visible>
+  static int walk_apart_moving_away(const Walk& walk, int end, Memory& memory, const Visible& visible) {
+    int failed = -1;
+    for (int step = walk.first_from(memory.blocked_to + 1); step < end; step = walk.first_from(step + 1)) {
+      if (visible(step)) {
+        memory.blocked_to = std::max(memory.blocked_to, failed);
+        memory.reach = std::max(memory.reach, step);
+        return step;
+      }
+      failed = step;
+      if (step <= memory.reach) memory.blocked_to = step;
+    }
+    return -1;
+  }
+
+  // ... and when it moves back towards the walk's start: a step not seen by X, with a step at or before it
+  // seen by an earlier X, is seen neither by X nor by a later X, nor is any step after it.
+  template <class Visible>
+  static int walk_apart_moving_back(const Walk& walk, int end, Memory& memory, const Visible& visible) {
+    for (int step = walk.first_from(0); step < std::min(end, memory.blocked_from); step = walk.first_from(step + 1)) {
+      if (visible(step)) {
+        memory.seen_nearest = std::min(memory.seen_nearest, step);
+        return step;
+      }
+      if (step >= memory.seen_nearest) {
+        memory.blocked_from = step;
+        return -1;
+      }
+    }
+    return -1;
   }
 
   void record(Row& row, int q, int Q, int G, int M, int H) {
@@ -482,6 +643,7 @@ class ProgramCubic final : public Program {
   int notch_count_;
   LooseRays rays_;
   std::vector<Row> rows_;  // at(g, h): the row of interval (g, h), empty when it has no witness
+  Walks walks_;
   std::int64_t table_entries_ = 0, table_witnesses_ = 0, scan_steps_ = 0, p4_tests_ = 0, lookup_steps_ = 0, chosen_ = 0,
                chosen_from_w_ = 0;
 };

@@ -496,9 +496,12 @@ TEST(ChazelleDobkinTables, SameCountOnJitteredQuadsWithSpikes) {
         for (std::size_t by : {std::size_t{0}, std::size_t{4}}) {
           const std::string where = "jittered quads m=" + std::to_string(m) + " spike=" + std::to_string(spike) +
                                     " seed=" + std::to_string(seed) + " rotated " + std::to_string(by);
-          same_count(rotated(p, by), where);
+          const Polygon turned = rotated(p, by);
+          same_count(turned, where);
+          cd::ProgramCubic alone(turned, cd::ProgramCubic::Walks::kEachAlone);
           Counters counters;
-          find_algorithm("chazelle-dobkin")->run(rotated(p, by), counters);
+          alone.run(counters);
+          alone.report(counters);
           chosen += counters["x4_chosen"];
           p4_failures += counters["x4_p4_tests"] - counters["x4_table_witnesses"];
         }
@@ -748,6 +751,47 @@ TEST(ChazelleDobkinTables, RowsHoldExactlyTheLooseX4OfTightInnerNotches) {
   }
   EXPECT_GT(seen.in_e, 300);
   EXPECT_GT(seen.in_w, 200);
+}
+
+// The walks of a pass skip the Y that earlier walks proved X cannot see (crossing rays: the triangle X c Y;
+// rays apart: the convex quadrilateral of two segments in P; header of algorithms/chazelle_dobkin_cubic.cpp).
+// Each walk must still stop at the same Y as a walk that tests every Y in turn: every entry of every row,
+// inner notch and rays, the same in both on polygons of every family large enough for long passes (and
+// each rotated by a third), and the skips must save tests.
+TEST(ChazelleDobkinTables, CarriedOverWalksFindTheWitnessesOfWalksAlone) {
+  std::int64_t carried_tests = 0, alone_tests = 0, witnesses = 0;
+  for (const Family& f : families())
+    for (std::size_t r : {12, 24, 40})
+      for (std::size_t n : {r + 4, 3 * r}) {
+        if (f.infeasible(n, r)) continue;
+        for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+          const Polygon base = make({f.name, n, r, seed});
+          for (std::size_t by : {std::size_t{0}, base.size() / 3}) {
+            const Polygon p = rotated(base, by);
+            const std::string where = label({f.name, n, r, seed}) + " rotated " + std::to_string(by);
+            cd::ProgramCubic carried(p), alone(p, cd::ProgramCubic::Walks::kEachAlone);
+            Counters carried_counters, alone_counters;
+            carried.run(carried_counters);
+            alone.run(alone_counters);
+            carried.report(carried_counters);
+            alone.report(alone_counters);
+            const int notches = static_cast<int>(p.reflex_count());
+            for (int g = 0; g < notches; ++g)
+              for (int h = g + 2; h < notches; ++h)
+                for (int q = 0; q < notches; ++q) {
+                  const cd::Witness a = carried.entry(g, h, q), b = alone.entry(g, h, q);
+                  EXPECT_TRUE(a.inner == b.inner && a.sides == b.sides)
+                      << where << " row (" << g << ", " << h << ") at " << q << ": " << a.inner << "/" << int{a.sides}
+                      << " against " << b.inner << "/" << int{b.sides};
+                  witnesses += a.inner >= 0;
+                }
+            carried_tests += carried_counters["x4_p4_tests"];
+            alone_tests += alone_counters["x4_p4_tests"];
+          }
+        }
+      }
+  EXPECT_GT(witnesses, 5000);
+  EXPECT_LT(carried_tests, alone_tests);
 }
 
 // Every table witness is an entry and passed one P4 test, every entry a position of a list; the scan
