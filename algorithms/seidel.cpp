@@ -66,7 +66,11 @@
 // not every key in every run (random and spiral r = 16 16-25% slower in one run of all families), and
 // at n = 10^5 most keys were slower, notch-heavy in all three runs (14-44%). How much heap memory a
 // call finds to reuse depends on what ran before it; at 10^5, where the cells fit in the cache, the
-// table's extra load on every step may also cost more than the faults save.
+// table's extra load on every step may also cost more than the faults save. Nor kept: the one array in
+// 2 MiB pages (aligned to them, madvise(MADV_HUGEPAGE), transparent huge pages in "madvise" mode on the
+// reference machine, a virtual machine): each key alone in a fresh process (3 rounds, seed 1, n = 10^6),
+// random r = n/4 0.98 s became 1.20 s and comb r = 16 1.05 s 1.36 s (spiral r = 16 0.69 s 0.66 s);
+// after other keys in the same process random r = n/4 was 7% faster but comb r = 16 30% slower.
 #include "algorithms/monotone.h"
 
 #include <array>
