@@ -60,8 +60,9 @@
 //     or nearest member for 32767 notches), and the orders along G and H are counting sorts of ranks,
 //     so a scan is O(r) besides its walks. The P2-feasible Y of a query are then exactly the set; P1
 //     makes them a range from one end of it, and the query's witness is the first Y of that range, in
-//     order from that end, that passes P4: the walk. Soundness: every witness satisfies all of (4),
-//     which chosen() checks again in full before the layout (a failure throws: it would be a bug).
+//     order from that end, that passes P4: the walk. Soundness: every witness satisfies all of (4)
+//     (P4 tested, or, where a walk records a Y without testing it, proven by (6)), which chosen()
+//     checks again in full before the layout (a failure throws: it would be a bug).
 //     Completeness over loose pairs: by (4), every loose pair with the four conditions is reached by
 //     the walk of its query before the walk stops, unless the walk stopped at an earlier witness.
 // (6) The walks of a pass share what they learn (not in the OCR text, whose "2-way scans" stop before
@@ -69,27 +70,33 @@
 //     pass X moves one way along G. A walk may skip a Y only where (a) or (b) proves that X cannot see
 //     it, so it stops at the same Y as a walk testing every Y in turn (the test
 //     CarriedOverWalksFindTheWitnessesOfWalksAlone holds every row of both to each other).
+//     Two facts first. For one X the Y it sees form an interval of H (if X sees Y1 and Y2, the triangle
+//     X Y1 Y2 has its boundary in int P, so all of it lies there), and for one Y the X that see it an
+//     interval of G; they cover X or Y at equal ranks (several rays through one point).
 //     (a) G and H cross at c. For X, Y other than c, XY lies in int P iff the closed triangle X c Y
 //         does: Xc and cY lie in G and H, so if XY lies in int P the triangle's boundary does, and so
 //         does the triangle, P being simply connected. The triangle only grows as X or Y moves away
 //         from c along its ray. So on each side of c the Y that X sees are those between c and a
 //         threshold: beyond c only the first Y of a walk need be tested, and on the walk's own side
 //         (c included) the seen Y are the last ones. While X moves towards c, every Y an earlier X saw
-//         stays seen: the walk tests backwards from the nearest such Y while the tests pass. While X
-//         moves away from c, a Y an earlier X did not see stays unseen: the walk starts after it.
-//     (b) G and H apart. XY then lies in the region R of P between G and H. Y lies strictly right of
-//         the line of G and X strictly right of that of H (4), so R lies right of both rays and its
-//         boundary, clockwise, runs along G from z_g, an arc, along H from z_h, an arc. Let s and t be
-//         the parameters along G and H from their notches. If X1 sees Y1 and X2 sees Y2 with
-//         s1 < s2 and t1 > t2, then X1 X2 Y2 Y1 is a simple quadrilateral (X2 and Y2 lie on the part
-//         of R that X1Y1 cuts off beyond X1 and before Y1, so X2Y2 cannot cross X1Y1), convex (each
-//         corner has a side along G or H with the other side strictly right of its line), and its
-//         boundary lies in int P, so all of it does: every X between X1 and X2 sees every Y between
-//         Y2 and Y1. So what X sees moves up along H as X moves up along G, and, for a walk whose seen
-//         Y move away from its start along the pass: if X does not see Y but X or an earlier X saw a
-//         Y' at or after Y, no later X sees Y or a Y before it (the walk starts after the last such
-//         Y). For a walk whose seen Y move back towards its start: if X does not see Y but an earlier
-//         X saw a Y' at or before Y, neither X nor a later X sees Y or a Y after it (the walk stops).
+//         stays seen: the walk tests the Y before the first such Y of the walk, one by one back
+//         towards its start, while the tests pass.
+//         While X moves away from c, a Y an earlier X did not see stays unseen: the walk starts after
+//         it. (By (4) no X or Y is at c and all Y of a scan lie on one side of c; the code does not
+//         need it.)
+//     (b) G and H apart. Y lies strictly right of the line of G and X strictly right of that of H (4).
+//         Let s and t be the parameters along G and H from their notches. If X1 sees Y1 and X2 sees
+//         Y2 with s1 < s2 and t1 > t2, the closed path X1 X2 Y2 Y1 turns clockwise, strictly, at each
+//         of its four corners (at X1 and X2 since Y1 and Y2 lie right of G's line, at Y2 and Y1 since
+//         X2 and X1 lie right of H's), so it is a convex quadrilateral (its four turns, each strictly
+//         between 0 and 180 degrees, add up to a multiple of 360, so to 360). Its sides lie in int P, so all of it does: every X between X1 and X2
+//         sees every Y between Y2 and Y1. So the lowest and the highest Y that X sees along H never go
+//         down as X moves up along G, and, for a walk whose seen Y move away from its start along the
+//         pass: if X does not see Y but X or an earlier X saw a Y' at or after Y, no later X sees Y or
+//         a Y before it (the walk starts after the last such Y). For a walk whose seen Y move back
+//         towards its start: if X does not see Y but an earlier X saw a Y' at or before Y, neither X
+//         nor a later X sees Y or a Y after it (the walk stops). (The same holds for crossing rays;
+//         the cases differ in what the walks cost, (a) bounding it.)
 // Proven: every witness is an X4-pattern, so the output is always a valid decomposition, with at most
 // the optimum's patterns. Assumed, not proven (call it A18'): whenever a tight X4-pattern in
 // chazelle-dobkin-n5's sense (tips of Q, Theorem 15) exists, some loose one on tight notches exists too

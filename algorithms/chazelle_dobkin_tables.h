@@ -224,8 +224,8 @@ class ProgramCubic final : public Program {
 
   // A set of places in [0, size): a bitset under summary bitsets (a bit per nonempty word of the level
   // below) up to a single word. Inserting, and finding the nearest member on either side of a place,
-  // take O(levels) word operations, levels = ceil(log_64 size): at most 3 for the 65534 rays of 32767
-  // notches. (A linked list with offline insertion points would be O(1), but walks resume from places
+  // take O(levels) word operations, levels = max(1, ceil(log_64 size)): at most 3 for the 65534 rays of
+  // 32767 notches. (A linked list with offline insertion points would be O(1), but walks resume from places
   // that earlier walks left, which needs the nearest member of any place.)
   class PlaceSet {
    public:
@@ -243,7 +243,7 @@ class ProgramCubic final : public Program {
       }
     }
     bool empty() const { return levels_.back()[0] == 0; }
-    // The largest member at most k, or -1.
+    // The largest member at most k, or -1; k in [-1, size).
     int at_or_before(int k) const {
       for (std::size_t level = 0; level < levels_.size() && k >= 0; ++level, k = (k >> 6) - 1) {
         const std::uint64_t word = levels_[level][static_cast<std::size_t>(k >> 6)] & (~std::uint64_t{0} >> (63 - (k & 63)));
@@ -251,7 +251,7 @@ class ProgramCubic final : public Program {
       }
       return -1;
     }
-    // The smallest member at least k, or size.
+    // The smallest member at least k, or size; k in [0, size].
     int at_or_after(int k) const {
       for (std::size_t level = 0; level < levels_.size() && static_cast<std::size_t>(k >> 6) < levels_[level].size();
            ++level, k = (k >> 6) + 1) {
@@ -569,7 +569,7 @@ class ProgramCubic final : public Program {
   // Along a pass t(X) only falls while X moves towards c, and only rises while X moves away from it.
   //
   // X moving towards c: every near step from `seen_from` on is seen (an earlier X saw it). The walk
-  // tests the inserted steps before it, backwards, while they are seen.
+  // tests the inserted steps before it, one by one back towards its start, while they are seen.
   template <class Visible>
   static int walk_approaching(const Walk& walk, int near_end, int end, Memory& memory, const Visible& visible) {
     int& seen_from = memory.seen_from;

@@ -759,45 +759,45 @@ TEST(ChazelleDobkinTables, RowsHoldExactlyTheLooseX4OfTightInnerNotches) {
 // inner notch and rays, the same in both on polygons of every family large enough for long passes (and
 // each rotated by a third), and the skips must save tests.
 TEST(ChazelleDobkinTables, CarriedOverWalksFindTheWitnessesOfWalksAlone) {
-  std::int64_t carried_tests = 0, alone_tests = 0, witnesses = 0;
+  std::vector<std::pair<Polygon, std::string>> polygons;
   for (const Family& f : families())
     for (std::size_t r : {12, 24, 40})
       for (std::size_t n : {r + 4, 3 * r}) {
         if (f.infeasible(n, r)) continue;
         for (std::uint64_t seed = 1; seed <= 2; ++seed) {
           const Polygon base = make({f.name, n, r, seed});
-          for (std::size_t by : {std::size_t{0}, base.size() / 3}) {
-            const Polygon p = rotated(base, by);
-            const std::string where = label({f.name, n, r, seed}) + " rotated " + std::to_string(by);
-            cd::ProgramCubic carried(p), alone(p, cd::ProgramCubic::Walks::kEachAlone);
-            Counters carried_counters, alone_counters;
-            carried.run(carried_counters);
-            alone.run(alone_counters);
-            carried.report(carried_counters);
-            alone.report(alone_counters);
-            const int notches = static_cast<int>(p.reflex_count());
-            for (int g = 0; g < notches; ++g)
-              for (int h = g + 2; h < notches; ++h)
-                for (int q = 0; q < notches; ++q) {
-                  const cd::Witness a = carried.entry(g, h, q), b = alone.entry(g, h, q);
-                  EXPECT_TRUE(a.inner == b.inner && a.sides == b.sides)
-                      << where << " row (" << g << ", " << h << ") at " << q << ": " << a.inner << "/" << int{a.sides}
-                      << " against " << b.inner << "/" << int{b.sides};
-                  witnesses += a.inner >= 0;
-                }
-            carried_tests += carried_counters["x4_p4_tests"];
-            alone_tests += alone_counters["x4_p4_tests"];
-          }
+          for (std::size_t by : {std::size_t{0}, base.size() / 3})
+            polygons.emplace_back(rotated(base, by), label({f.name, n, r, seed}) + " rotated " + std::to_string(by));
         }
       }
+  // Where a walk of rays apart whose seen Y move back stopped one Y too early would lose a witness
+  // (row (3, 13) at outer notch 2; found by a stress run over 125,815 polygons).
+  polygons.emplace_back(rotated(make({"random", 22, 16, 2}), 12), "random n=22 r=16 seed=2 rotated 12");
+  std::int64_t carried_tests = 0, alone_tests = 0, witnesses = 0;
+  for (const auto& [p, where] : polygons) {
+    cd::ProgramCubic carried(p), alone(p, cd::ProgramCubic::Walks::kEachAlone);
+    Counters carried_counters, alone_counters;
+    carried.run(carried_counters);
+    alone.run(alone_counters);
+    carried.report(carried_counters);
+    alone.report(alone_counters);
+    const int notches = static_cast<int>(p.reflex_count());
+    for (int g = 0; g < notches; ++g)
+      for (int h = g + 2; h < notches; ++h)
+        for (int q = 0; q < notches; ++q) {
+          const cd::Witness a = carried.entry(g, h, q), b = alone.entry(g, h, q);
+          EXPECT_TRUE(a.inner == b.inner && a.sides == b.sides)
+              << where << " row (" << g << ", " << h << ") at " << q << ": " << a.inner << "/" << int{a.sides}
+              << " against " << b.inner << "/" << int{b.sides};
+          witnesses += a.inner >= 0;
+        }
+    carried_tests += carried_counters["x4_p4_tests"];
+    alone_tests += alone_counters["x4_p4_tests"];
+  }
   EXPECT_GT(witnesses, 5000);
   EXPECT_LT(carried_tests, alone_tests);
 }
 
-// Every table witness is an entry and passed one P4 test, every entry a position of a list; the scan
-// visits O(r) list positions per interval and ray choice besides its P4 tests; STEP 3 looks up at
-// most 2 (j - i - 1) entries per interval; an X4 chosen needs a witness; at most one loose point per
-// pair of rays of distinct notches.
 // The list steps of the scans (walks to P4 tests aside) and STEP 3's lookups grow as r^3 at most: the
 // counters that the header's time bound rests on, checked against it with the constants of a loose count
 // (about r^2/2 intervals, 4 runs of a few list positions per ray each).
