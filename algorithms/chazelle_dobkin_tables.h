@@ -274,8 +274,11 @@ class ProgramCubic final : public Program {
   };
 
   // One scan's inserts, the places of by_at (in order along H: Y's rank, then the ray, the order of the
-  // walks), and where G and H cross when their clipped rays do.
+  // walks), where G and H cross when their clipped rays do, and the Y already made (a Y is tested by
+  // the walks of many queries, and making it is an exact division).
   struct Lists {
+    Lists(int g_ray, int h_ray, std::vector<Insert> usable)
+        : G(g_ray), H(h_ray), inserts(std::move(usable)), place(inserts.size()), y_at_place(inserts.size()) {}
     int G, H;
     std::vector<Insert> inserts;
     std::vector<int> by_at;       // positions into inserts
@@ -284,6 +287,7 @@ class ProgramCubic final : public Program {
     bool crossing = false;
     int crossing_on_g = -1, crossing_on_h = -1;  // the ranks of G ∩ H along G and along H
     const Insert& at_place(int k) const { return inserts[static_cast<std::size_t>(by_at[static_cast<std::size_t>(k)])]; }
+    std::vector<std::optional<QPoint>> y_at_place;  // Y of each place, once a walk has needed it
   };
 
   // What the walks of one pass in one direction proved for its later walks, in that direction's steps
@@ -409,7 +413,7 @@ class ProgramCubic final : public Program {
   void scan(int g, int h, int G, int H, Row& row) {
     const std::vector<Query> queries = open_queries(g, h, G, H, row);
     if (queries.empty()) return;
-    Lists lists{G, H, usable_inserts(g, h, G, H), {}, {}, {}};
+    Lists lists(G, H, usable_inserts(g, h, G, H));
     if (lists.inserts.empty()) return;
     const auto item = [&](int k) -> const Insert& { return lists.inserts[static_cast<std::size_t>(k)]; };
     const int size = static_cast<int>(lists.inserts.size());
@@ -420,7 +424,6 @@ class ProgramCubic final : public Program {
     lists.by_at = stably_ordered(by_ray, range, [&](int k) { return static_cast<std::size_t>(item(k).at); });
     const std::vector<int> along_g =
         stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).along + 1); });
-    lists.place.resize(lists.inserts.size());
     for (int k = 0; k < size; ++k) lists.place[static_cast<std::size_t>(lists.by_at[static_cast<std::size_t>(k)])] = k;
     lists.below_rank.assign(range + 1, 0);
     for (const Insert& y : lists.inserts) ++lists.below_rank[static_cast<std::size_t>(y.at) + 1];
@@ -491,7 +494,7 @@ class ProgramCubic final : public Program {
 
   // P2 for inserts whose line crosses G with cross(u_m, u_g) > 0 asks X beyond the crossing: a prefix
   // along G. Queries are answered before the inserts of the same rank (strict inequality).
-  void sweep_forward(const std::vector<Query>& queries, const Lists& lists, const std::vector<int>& along_g, Row& row) {
+  void sweep_forward(const std::vector<Query>& queries, Lists& lists, const std::vector<int>& along_g, Row& row) {
     Pass pass(static_cast<int>(lists.inserts.size()), true);
     std::size_t next = 0;
     for (const Query& q : queries) {
@@ -501,7 +504,7 @@ class ProgramCubic final : public Program {
     }
   }
 
-  void sweep_backward(const std::vector<Query>& queries, const Lists& lists, const std::vector<int>& along_g, Row& row) {
+  void sweep_backward(const std::vector<Query>& queries, Lists& lists, const std::vector<int>& along_g, Row& row) {
     Pass pass(static_cast<int>(lists.inserts.size()), false);
     std::size_t next = along_g.size();
     for (auto q = queries.rbegin(); q != queries.rend(); ++q) {
@@ -521,7 +524,7 @@ class ProgramCubic final : public Program {
   // P1 bounds Y's rank along H on one side (or not at all when Q and H are parallel): a walk takes the
   // inserted Y from the far end of the list inwards while P1 holds, and the first that passes P4 (XY in
   // P) is the witness. Steps [0, end) are those where P1 holds.
-  void find_visible(const Query& query, const Lists& lists, Pass& pass, Row& row) {
+  void find_visible(const Query& query, Lists& lists, Pass& pass, Row& row) {
     const int q = LooseRays::notch(query.ray);
     if (pass.inserted.empty() || (!row.empty() && row[static_cast<std::size_t>(q)].inner >= 0)) return;
     const int turn = rays_.cross_sign(query.ray, lists.H);
@@ -535,7 +538,9 @@ class ProgramCubic final : public Program {
       ++scan_steps_;
       ++p4_tests_;
       if (!x) x = rays_.point(lists.G, query.ray);
-      return patterns().inside(*x, rays_.point(lists.H, lists.at_place(walk.place(step)).ray));
+      std::optional<QPoint>& y = lists.y_at_place[static_cast<std::size_t>(walk.place(step))];
+      if (!y) y = rays_.point(lists.H, lists.at_place(walk.place(step)).ray);
+      return patterns().inside(*x, *y);
     };
     Memory& memory = pass.memory[turn >= 0 ? 0 : 1];
     int found = -1;
