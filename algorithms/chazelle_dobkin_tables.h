@@ -286,17 +286,18 @@ class ProgramCubic final : public Program {
     std::vector<int> below_rank;  // below_rank[v]: the places whose Y has a rank along H below v
     bool crossing = false;
     int crossing_on_g = -1, crossing_on_h = -1;  // the ranks of G ∩ H along G and along H
-    const Insert& at_place(int k) const { return inserts[static_cast<std::size_t>(by_at[static_cast<std::size_t>(k)])]; }
     std::vector<std::optional<QPoint>> y_at_place;  // Y of each place, once a walk has needed it
+
+    const Insert& at_place(int k) const { return inserts[static_cast<std::size_t>(by_at[static_cast<std::size_t>(k)])]; }
   };
 
   // What the walks of one pass in one direction proved for its later walks, in that direction's steps
   // (find_visible; each field is used by one kind of walk).
   struct Memory {
-    int seen_from = INT_MAX;      // crossing, X approaching c: every near step from here on is seen
-    int blocked_to = -1;          // no step up to here is seen (crossing with X receding, or apart)
-    int reach = -1;               // apart: the furthest step seen so far
-    int blocked_from = INT_MAX;   // apart: no step from here on is seen
+    int seen_from = INT_MAX;     // crossing, X approaching c: every near step from here on is seen
+    int blocked_to = -1;         // no step up to here is seen (crossing with X receding, or apart)
+    int reach = -1;              // apart: the furthest step seen so far
+    int blocked_from = INT_MAX;  // apart: no step from here on is seen
     int seen_nearest = INT_MAX;  // apart: the nearest step seen so far
   };
 
