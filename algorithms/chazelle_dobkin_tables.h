@@ -422,13 +422,12 @@ class ProgramCubic final : public Program {
     for (int k = 0; k < size; ++k) positions[static_cast<std::size_t>(k)] = k;
     const std::size_t range = 2 * static_cast<std::size_t>(notch_count_) + 1;
     const std::vector<int> by_ray = stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).ray); });
-    lists.by_at = stably_ordered(by_ray, range, [&](int k) { return static_cast<std::size_t>(item(k).at); });
+    const auto at = [&](int k) { return static_cast<std::size_t>(item(k).at); };
+    lists.by_at = stably_ordered(by_ray, range, at);
+    lists.below_rank = counts_below(positions, range, at);
     const std::vector<int> along_g =
         stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).along + 1); });
     for (int k = 0; k < size; ++k) lists.place[static_cast<std::size_t>(lists.by_at[static_cast<std::size_t>(k)])] = k;
-    lists.below_rank.assign(range + 1, 0);
-    for (const Insert& y : lists.inserts) ++lists.below_rank[static_cast<std::size_t>(y.at) + 1];
-    for (std::size_t v = 1; v <= range; ++v) lists.below_rank[v] += lists.below_rank[v - 1];
     if (rays_.loose(G, H)) lists.crossing = true, lists.crossing_on_g = rays_.key(G, H), lists.crossing_on_h = rays_.key(H, G);
     sweep_forward(queries, lists, along_g, row);
     sweep_backward(queries, lists, along_g, row);
@@ -475,12 +474,20 @@ class ProgramCubic final : public Program {
     return out;
   }
 
+  // counts[v]: how many of `positions` have a key (an integer in [0, range)) below v, for v in
+  // [0, range]. O(positions + range).
+  template <class Key>
+  static std::vector<int> counts_below(const std::vector<int>& positions, std::size_t range, Key key) {
+    std::vector<int> counts(range + 1, 0);
+    for (int k : positions) ++counts[key(k) + 1];
+    for (std::size_t v = 1; v <= range; ++v) counts[v] += counts[v - 1];
+    return counts;
+  }
+
   // `positions` ordered by key (an integer in [0, range)), stably: a counting sort, O(positions + range).
   template <class Key>
   static std::vector<int> stably_ordered(const std::vector<int>& positions, std::size_t range, Key key) {
-    std::vector<int> first(range + 1, 0);
-    for (int k : positions) ++first[key(k) + 1];
-    for (std::size_t v = 1; v <= range; ++v) first[v] += first[v - 1];
+    std::vector<int> first = counts_below(positions, range, key);
     std::vector<int> out(positions.size());
     for (int k : positions) out[static_cast<std::size_t>(first[key(k)]++)] = k;
     return out;
