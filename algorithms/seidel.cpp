@@ -71,6 +71,15 @@
 // reference machine, a virtual machine): each key alone in a fresh process (3 rounds, seed 1, n = 10^6),
 // random r = n/4 0.98 s became 1.20 s and comb r = 16 1.05 s 1.36 s (spiral r = 16 0.69 s 0.66 s);
 // after other keys in the same process random r = n/4 was 7% faster but comb r = 16 30% slower.
+// Nor kept: the one array in a mapping of its own whose pages are made present 2 MiB at a time before
+// the first cell there is made (madvise(MADV_POPULATE_WRITE)), so that no page fault (about 37k per
+// call at n = 10^6) falls inside an insertion. Random r = n/4, n = 10^6, seeds 1-3, after cgal-cdt's
+// call in the same process, 6 interleaved rounds: 5-8% faster in one run, 2% faster to 5% slower in a
+// later one. With 2 MiB pages as well: 9% faster on random r = n/4 and 18% on random r = 16 in one
+// run of 4 rounds, and in a run of every family at n = 10^6 (3 rounds) from 37% faster (convex) to 33%
+// slower (random r = 16); a first call after the machine had idled took 1.8 s against 1.15-1.22 s.
+// On the reference machine (a virtual machine) what a fresh page costs depends on the host, and
+// differences of this size are within the run-to-run noise.
 #include "algorithms/monotone.h"
 
 #include <array>

@@ -65,7 +65,9 @@ def crash_record(started, why):
 
 def merge_contexts(contexts):
     """One context from several (invocations, shards): a field with one value keeps it; string fields
-    that differ are joined with " | " in order; other fields keep the last value."""
+    that differ are joined with " | " in order; other fields keep the last value. A context that is
+    itself merged (from a journal written back by rejournal.py) brings its count of invocations and its
+    list of versions."""
     merged = {}
     for context in contexts:
         for key, value in context.items():
@@ -73,7 +75,7 @@ def merge_contexts(contexts):
                 merged[key] += " | " + value
             elif key not in merged or not isinstance(value, str):
                 merged[key] = value
-    merged["invocations"] = str(len(contexts))
+    merged["invocations"] = str(sum(int(context.get("invocations", 1)) for context in contexts))
     merged["git_versions"] = " | ".join(_versions(contexts))
     return merged
 
@@ -83,9 +85,11 @@ def _versions(contexts):
     without repeats: merging git_commit and git_dirty separately loses which commit was dirty."""
     versions = []
     for context in contexts:
-        label = context.get("git_commit", "?")[:12] + (" (dirty)" if context.get("git_dirty") == "true" else "")
-        if label not in versions:
-            versions.append(label)
+        if "git_versions" in context:
+            labels = context["git_versions"].split(" | ")
+        else:
+            labels = [context.get("git_commit", "?")[:12] + (" (dirty)" if context.get("git_dirty") == "true" else "")]
+        versions += [label for label in labels if label not in versions]
     return versions
 
 

@@ -3,10 +3,12 @@ import csv
 import io
 import json
 import os
+import re
 import tempfile
 import unittest
 
 import merge
+import rejournal
 import results
 import synthetic
 
@@ -70,6 +72,49 @@ class JournalTest(unittest.TestCase):
         row = next(csv.DictReader(io.StringIO(results.to_csv([skipped]))))
         self.assertEqual((row["status"], row["n"], row["pieces"]), ("skipped", "800", ""))
         self.assertTrue(row["reason"].startswith("skipped (ceiling)"))
+
+
+class RejournalTest(unittest.TestCase):
+    """A journal written back from assembled results, some keys left out, then those keys measured again."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.stem = os.path.join(self.tmp.name, "s")
+        self.runs = synthetic.runs()[:6]
+        write_lines(self.stem + ".journal.jsonl",
+                    [{"context": {"sweep": "s", "date": "d1", "git_commit": "a" * 40, "git_dirty": "true"}}] +
+                    self.runs[:3] + [{"context": {"sweep": "s", "date": "d2", "git_commit": "b" * 40}}] +
+                    self.runs[3:])
+        results.assemble([self.stem + ".journal.jsonl"], self.stem)
+        os.remove(self.stem + ".journal.jsonl")
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_leaves_out_the_keys_to_measure_again_and_keeps_the_provenance(self):
+        left_out = self.runs[4]["name"]
+        with contextlib.redirect_stderr(io.StringIO()):
+            self.assertEqual(rejournal.main(["--sweep", "s", "--results", self.tmp.name,
+                                             "--remeasure", "^" + re.escape(left_out) + "$"]), 0)
+        _, runs, _ = results.read_journal(self.stem + ".journal.jsonl")
+        self.assertEqual(sorted(runs), sorted(r["name"] for r in self.runs if r["name"] != left_out))
+        remeasured = dict(self.runs[4], cpu_time=1.0)
+        results.append_line(self.stem + ".journal.jsonl", {"context": {"sweep": "s", "date": "d3", "git_commit": "c" * 40}})
+        results.append_line(self.stem + ".journal.jsonl", remeasured)
+        self.assertEqual(results.assemble([self.stem + ".journal.jsonl"], self.stem), 6)
+        with open(self.stem + ".json", encoding="utf-8") as f:
+            doc = json.load(f)
+        self.assertEqual([b["key_index"] for b in doc["benchmarks"]], list(range(6)))
+        self.assertEqual(doc["benchmarks"][4]["cpu_time"], 1.0)
+        self.assertEqual(doc["context"]["invocations"], "3")
+        self.assertEqual(doc["context"]["git_versions"], "aaaaaaaaaaaa (dirty) | bbbbbbbbbbbb | cccccccccccc")
+        self.assertEqual(doc["context"]["date"], "d1 | d2 | d3")
+
+    def test_refuses_to_replace_a_journal(self):
+        write_lines(self.stem + ".journal.jsonl", [])
+        with contextlib.redirect_stderr(io.StringIO()) as err:
+            self.assertEqual(rejournal.main(["--sweep", "s", "--results", self.tmp.name]), 1)
+        self.assertIn("exists", err.getvalue())
 
 
 class MergeTest(unittest.TestCase):

@@ -1,0 +1,60 @@
+#!/usr/bin/python3
+"""Writes a sweep's journal back from its assembled results, leaving out the keys to measure again.
+
+The journal (RESULTS/SWEEP.journal.jsonl) is not committed; the assembled RESULTS/SWEEP.json is. On a
+fresh clone, to measure some keys of the committed reference run again and keep the rest, this writes
+the journal from SWEEP.json: its context (already merged from every earlier invocation) and every run
+whose name does not match --remeasure. Running the sweep again then measures just the keys left out,
+and assembling merges the old context with the new invocations' contexts (results.merge_contexts
+counts the invocations of both and lists their versions in order).
+
+usage: rejournal.py --sweep NAME [--results DIR] [--remeasure REGEX]
+"""
+
+import argparse
+import json
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import results  # noqa: E402
+
+
+def rejournal(results_dir, sweep, remeasure):
+    """Writes the journal; returns (runs kept, runs left out). Raises ValueError when the journal
+    already exists (it may hold measurements the results file lacks) or the results file is missing."""
+    stem = os.path.join(results_dir, sweep)
+    journal = stem + ".journal.jsonl"
+    if os.path.exists(journal):
+        raise ValueError("{} exists; it would be replaced (delete it first)".format(journal))
+    try:
+        with open(stem + ".json", encoding="utf-8") as f:
+            doc = json.load(f)
+    except FileNotFoundError:
+        raise ValueError("no results file {}.json".format(stem)) from None
+    pattern = re.compile(remeasure) if remeasure else None
+    kept = [run for run in doc["benchmarks"] if not (pattern and pattern.search(run["name"]))]
+    lines = [{"context": doc["context"]}] + kept
+    results.write_atomic(journal, "".join(json.dumps(line) + "\n" for line in lines))
+    return len(kept), len(doc["benchmarks"]) - len(kept)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--sweep", required=True)
+    parser.add_argument("--results", default="results")
+    parser.add_argument("--remeasure", help="a regular expression searched in key names: those keys are left out")
+    args = parser.parse_args(argv)
+    try:
+        kept, left_out = rejournal(args.results, args.sweep, args.remeasure)
+    except (ValueError, re.error) as e:
+        print("error: " + str(e), file=sys.stderr)
+        return 1
+    print("rejournal: {} runs kept, {} left out to measure again".format(kept, left_out), file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
