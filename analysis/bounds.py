@@ -13,6 +13,9 @@ that play by the same rules: a diagonal-only algorithm is compared with diagonal
 that may add Steiner points with all. Where no optimal algorithm ran on a polygon, that best is only an
 upper bound on OPT, so ratios are then lower than the true approximation ratios.
 
+Against the peer: every other triangulation is timed against CGAL's constrained Delaunay triangulation
+(cgal-cdt) on the same polygons at n = 10^5 and 10^6, median over the seeds both ran.
+
 usage: bounds.py RESULTS.json [--polydecomp build/polydecomp | --registry LIST.json] [-o results/bounds.md]
 """
 
@@ -220,6 +223,73 @@ def piece_rows(runs, registry):
             if name in registry]
 
 
+PEER = "cgal-cdt"  # the CGAL peer every triangulation is timed against, polygon by polygon
+PEER_SIZES = (100000, 1000000)  # the sizes of the comparison (issue 4: "at n = 10^5 and 10^6")
+
+
+def peer_rows(runs, registry, peer=PEER, sizes=PEER_SIZES):
+    """Every other algorithm of the peer's kind (CGAL's own excepted) against the peer on the same
+    polygons, at the given sizes: per family, n and r, [algorithm, family, n, r,
+    seeds, median seconds, the peer's median seconds, speed-up (the peer's median over the
+    algorithm's), seeds on which the algorithm was faster]. Medians are over the seeds both ran."""
+    ok = [run for run in runs if run.status == "ok"]
+    peer_seconds = {run.polygon: run.seconds for run in ok if run.algorithm == peer}
+    kind = registry[peer]["kind"]
+    pairs = collections.defaultdict(list)
+    for run in ok:
+        algo = registry.get(run.algorithm)
+        if (algo and algo["kind"] == kind and run.algorithm != peer and not run.algorithm.startswith("cgal-")
+                and run.n in sizes and run.polygon in peer_seconds):
+            pairs[(run.algorithm, run.family, run.n, run.r)].append((run.seconds, peer_seconds[run.polygon]))
+    rows = []
+    for (name, family, n, r), times in sorted(pairs.items()):
+        mine, theirs = _median([t for t, _ in times]), _median([t for _, t in times])
+        faster = sum(1 for t, u in times if t < u)
+        rows.append([name, family, n, r, len(times), mine, theirs, theirs / mine if mine > 0 else float("inf"), faster])
+    return rows
+
+
+def _median(values):
+    values = sorted(values)
+    middle = len(values) // 2
+    return values[middle] if len(values) % 2 else (values[middle - 1] + values[middle]) / 2
+
+
+def peer_summary(rows):
+    """Per algorithm: [algorithm, keys compared, keys where its median is slower, the slowest key]."""
+    by_algorithm = collections.defaultdict(list)
+    for row in rows:
+        by_algorithm[row[0]].append(row)
+    summary = []
+    for name, mine in sorted(by_algorithm.items()):
+        slower = [row for row in mine if row[7] < 1]
+        worst = min(mine, key=lambda row: row[7])
+        summary.append([name, len(mine), len(slower),
+                        "{:.2f}x ({}, n = {}, r = {})".format(worst[7], worst[1], worst[2], worst[3])])
+    return summary
+
+
+def _peer_section(rows, peer=PEER):
+    if not rows:
+        return "No other algorithm of {}'s kind ran beside it at n = {}.".format(
+            peer, " or ".join(str(n) for n in PEER_SIZES))
+    return "\n".join([
+        "Each other algorithm of {0}'s kind against the CGAL peer {0} on the same polygons, at n = {1}:".format(
+            peer, " and ".join(str(n) for n in PEER_SIZES)),
+        "medians of the CPU time of one call over the seeds both ran; the speed-up is",
+        "{0}'s median over the algorithm's (above 1 the algorithm is faster); the last column counts the".format(peer),
+        "seeds on which the algorithm was the faster. One call per key: on a shared or virtual machine a",
+        "difference of a few percent is within the run-to-run noise.",
+        "",
+        _table(["algorithm", "keys", "slower (median)", "lowest speed-up"], peer_summary(rows)),
+        "",
+        _table(["algorithm", "family", "n", "r", "seeds", "median (s)", "{} median (s)".format(peer), "speed-up",
+                "faster on seeds"],
+               [[a, f, n, r, k, "{:.4g}".format(m), "{:.4g}".format(t), "{:.2f}".format(x), w]
+                for a, f, n, r, k, m, t, x, w in rows]),
+    ])
+
+
 def _table(header, rows):
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     lines += ["| " + " | ".join(str(c).replace("|", "\\|") for c in row) + " |" for row in rows]
@@ -317,6 +387,10 @@ def render(context, registry, times, ops, pieces, runs, source):
                [[p.algorithm, p.kind, p.claim_text, p.counts["ok"], p.counts["invalid"], p.counts["failed"],
                  p.counts["skipped"], "{:.3f}".format(p.worst_ratio) if p.worst_ratio else "-", p.verdict]
                 for p in pieces]),
+        "",
+        "## Against {}".format(PEER),
+        "",
+        _peer_section(peer_rows(runs, registry)) if PEER in registry else "{} is not registered.".format(PEER),
         "",
         "## Invalid and failed runs",
         "",

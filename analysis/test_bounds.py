@@ -71,6 +71,24 @@ class BoundsTest(unittest.TestCase):
         self.assertEqual(row(self.md, "Invalid and failed runs", ["opt", "invalid", synthetic.INVALID_KEY])[-1],
                          "piece 3 is not convex at vertex 17")
 
+    def test_each_algorithm_of_the_peers_kind_against_the_peer_on_the_same_polygons(self):
+        _, runs = bounds.results.load(os.path.join(self.tmp.name, "synthetic.json"))
+        registry = bounds.load_registry(registry_file=os.path.join(self.tmp.name, "registry.json"))
+        rows = bounds.peer_rows(runs, registry, peer="liar", sizes=(1600, 3200))
+        self.assertEqual(sorted({(r[0], r[1], r[2]) for r in rows}),
+                         [(a, f, n) for a in ("quad", "tri") for f in ("comb", "random") for n in (1600, 3200)])
+        tri = [r for r in rows if r[0] == "tri" and r[1] == "random" and r[2] == 3200][0]
+        self.assertEqual(tri[3:5], [800, 2])
+        self.assertAlmostEqual(tri[7], 3200)  # n^2 against n, the same jitter on each polygon
+        self.assertEqual(tri[8], 2)
+        quad = [r for r in rows if r[0] == "quad"]
+        self.assertTrue(all(abs(r[7] - 1) < 1e-12 and r[8] == 0 for r in quad))
+        summary = bounds.peer_summary(rows)
+        self.assertEqual([s[:3] for s in summary], [["quad", 4, 0], ["tri", 4, 0]])
+        self.assertTrue(summary[1][3].startswith("1600.00x ("), summary[1][3])  # the lowest, at n = 1600
+        slow = bounds.peer_rows(runs, registry, peer="tri", sizes=(3200,))
+        self.assertEqual(bounds.peer_summary(slow)[0][:3], ["liar", 2, 2])
+
     def test_an_invalid_result_is_not_a_reference(self):
         best = bounds.best_pieces(bounds.results.load(os.path.join(self.tmp.name, "synthetic.json"))[1],
                                   bounds.load_registry(registry_file=os.path.join(self.tmp.name, "registry.json")))
