@@ -23,6 +23,7 @@ import argparse
 import collections
 import json
 import os
+import statistics
 import subprocess
 import sys
 
@@ -243,20 +244,15 @@ def peer_rows(runs, registry, peer=PEER, sizes=PEER_SIZES):
             pairs[(run.algorithm, run.family, run.n, run.r)].append((run.seconds, peer_seconds[run.polygon]))
     rows = []
     for (name, family, n, r), times in sorted(pairs.items()):
-        mine, theirs = _median([t for t, _ in times]), _median([t for _, t in times])
+        mine, theirs = statistics.median(t for t, _ in times), statistics.median(t for _, t in times)
         faster = sum(1 for t, u in times if t < u)
         rows.append([name, family, n, r, len(times), mine, theirs, theirs / mine if mine > 0 else float("inf"), faster])
     return rows
 
 
-def _median(values):
-    values = sorted(values)
-    middle = len(values) // 2
-    return values[middle] if len(values) % 2 else (values[middle - 1] + values[middle]) / 2
-
-
 def peer_summary(rows):
-    """Per algorithm: [algorithm, keys compared, keys where its median is slower, the slowest key]."""
+    """Per algorithm: [algorithm, keys compared, keys where its median is slower, the key of the lowest
+    speed-up]."""
     by_algorithm = collections.defaultdict(list)
     for row in rows:
         by_algorithm[row[0]].append(row)
