@@ -8,6 +8,10 @@ whose name does not match --remeasure. Running the sweep again then measures jus
 and assembling merges the old context with the new invocations' contexts (results.merge_contexts
 counts the invocations of both and lists their versions in order).
 
+The journal written is the unsharded one (a sharded sweep journals per shard and is merged by
+merge.py). Keys the sweep has gained since (a changed sweeps file or a new algorithm) are measured
+too.
+
 usage: rejournal.py --sweep NAME [--results DIR] [--remeasure REGEX]
 """
 
@@ -35,10 +39,11 @@ def rejournal(results_dir, sweep, remeasure):
     except FileNotFoundError:
         raise ValueError("no results file {}.json".format(stem)) from None
     pattern = re.compile(remeasure) if remeasure else None
-    kept = [run for run in doc["benchmarks"] if not (pattern and pattern.search(run["name"]))]
-    lines = [{"context": doc["context"]}] + kept
+    runs = doc.get("benchmarks", [])
+    kept = [run for run in runs if not (pattern and pattern.search(run.get("name", "")))]
+    lines = [{"context": doc.get("context", {})}] + kept
     results.write_atomic(journal, "".join(json.dumps(line) + "\n" for line in lines))
-    return len(kept), len(doc["benchmarks"]) - len(kept)
+    return len(kept), len(runs) - len(kept)
 
 
 def main(argv=None):

@@ -86,7 +86,7 @@ def _versions(contexts):
     versions = []
     for context in contexts:
         if "git_versions" in context:
-            labels = context["git_versions"].split(" | ")
+            labels = [label for label in context["git_versions"].split(" | ") if label]
         else:
             labels = [context.get("git_commit", "?")[:12] + (" (dirty)" if context.get("git_dirty") == "true" else "")]
         versions += [label for label in labels if label not in versions]

@@ -110,6 +110,16 @@ class RejournalTest(unittest.TestCase):
         self.assertEqual(doc["context"]["git_versions"], "aaaaaaaaaaaa (dirty) | bbbbbbbbbbbb | cccccccccccc")
         self.assertEqual(doc["context"]["date"], "d1 | d2 | d3")
 
+    def test_a_results_file_without_context_or_versions(self):
+        with open(self.stem + ".json", "w", encoding="utf-8") as f:
+            json.dump({"benchmarks": self.runs[:2]}, f)
+        with contextlib.redirect_stderr(io.StringIO()):
+            self.assertEqual(rejournal.main(["--sweep", "s", "--results", self.tmp.name]), 0)
+        results.append_line(self.stem + ".journal.jsonl", {"context": {"sweep": "s", "git_commit": "c" * 40}})
+        merged = results.merge_contexts([{"invocations": "0", "git_versions": ""}, {"git_commit": "c" * 40}])
+        self.assertEqual((merged["invocations"], merged["git_versions"]), ("1", "cccccccccccc"))
+        self.assertEqual(results.assemble([self.stem + ".journal.jsonl"], self.stem), 2)
+
     def test_refuses_to_replace_a_journal(self):
         write_lines(self.stem + ".journal.jsonl", [])
         with contextlib.redirect_stderr(io.StringIO()) as err:
