@@ -131,22 +131,33 @@ SegmentSearch::SegmentSearch(const Polygon& p, const std::vector<QPoint>& exact)
   for (std::size_t i = leaves_ - 1; i >= 1; --i) boxes_[i] = boxes_[2 * i] + boxes_[2 * i + 1];
 }
 
-// Descends the hierarchy from its root into the nodes whose box can meet the segment.
 bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId skip) {
+  finding_nearest_ = false;
+  return search(s, t, skip);
+}
+
+std::optional<SegmentSearch::Contact> SegmentSearch::first_contact(const QPoint& s, const QPoint& t) {
+  finding_nearest_ = true;
+  nearest_.reset();
+  search(s, t, kNoVertex);
+  finding_nearest_ = false;
+  return std::move(nearest_);
+}
+
+// Descends the hierarchy from its root into the nodes whose box can meet the segment.
+bool SegmentSearch::search(const QPoint& s, const QPoint& t, VertexId skip) {
   s_ = &s, t_ = &t;
   st_ = Segment(s, t);
   u_ = t - s;
   sx_ = Interval(CGAL::to_interval(s.x())), sy_ = Interval(CGAL::to_interval(s.y()));
   ux_ = Interval(CGAL::to_interval(u_.x())), uy_ = Interval(CGAL::to_interval(u_.y()));
-  const Interval tx(CGAL::to_interval(t.x())), ty(CGAL::to_interval(t.y()));
-  const CGAL::Bbox_2 around(std::min(sx_.inf(), tx.inf()), std::min(sy_.inf(), ty.inf()), std::max(sx_.sup(), tx.sup()),
-                            std::max(sy_.sup(), ty.sup()));
+  around_ = box_of(s, t);
   std::size_t pending[64] = {1};  // a path's worth of right siblings: the depth is below 64
   std::size_t size = 1;
   while (size > 0) {
     const std::size_t i = pending[--size];
     ++steps_;
-    if (!box_meets(boxes_[i], around)) continue;
+    if (!box_meets(boxes_[i])) continue;
     if (i >= leaves_) {
       if (chain_meets(i - leaves_, skip)) return true;
       continue;
@@ -159,8 +170,8 @@ bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId sk
 
 // Whether the box can meet the segment: it meets the segment's box and its corners are not settled
 // strictly on one side of the segment's line.
-bool SegmentSearch::box_meets(const CGAL::Bbox_2& box, const CGAL::Bbox_2& around) const {
-  if (!CGAL::do_overlap(around, box)) return false;
+bool SegmentSearch::box_meets(const CGAL::Bbox_2& box) const {
+  if (!CGAL::do_overlap(around_, box)) return false;
   CGAL::Protect_FPU_rounding<true> upwards;
   const int sides[4] = {settled_sign(line_side(box.xmin(), box.ymin())), settled_sign(line_side(box.xmax(), box.ymin())),
                         settled_sign(line_side(box.xmin(), box.ymax())), settled_sign(line_side(box.xmax(), box.ymax()))};
@@ -286,9 +297,50 @@ int SegmentSearch::dot_sign_with_u(std::size_t from, std::size_t to) {
   return sign != kUnsettled ? sign : exact_dot_sign(x(to) - x(from), u_);
 }
 
+// Whether chain vertex `from` (from == to), the chain's edge from `from` to `to`, or its stretch of
+// edges from `from` to `to` along the segment's line, meets the segment. When finding the nearest
+// contact, the point met nearest to s is kept instead and the search goes on.
 bool SegmentSearch::meets(std::size_t from, std::size_t to) {
-  if (from == to) return st_.has_on(x(from));
-  return CGAL::do_intersect(st_, Segment(x(from), x(to)));
+  if (from == to) {
+    if (!st_.has_on(x(from))) return false;
+    if (!finding_nearest_) return true;
+    keep_nearer(x(from), from, to);
+    return false;
+  }
+  const Segment piece(x(from), x(to));
+  if (!finding_nearest_) return CGAL::do_intersect(st_, piece);
+  const auto met = CGAL::intersection(st_, piece);
+  if (!met) return false;
+  if (const QPoint* point = boost::get<QPoint>(&*met)) {
+    keep_nearer(*point, from, to);
+  } else {
+    const Segment& overlap = boost::get<Segment>(*met);
+    const bool source_first = (overlap.source() - *s_) * u_ <= (overlap.target() - *s_) * u_;
+    keep_nearer(source_first ? overlap.source() : overlap.target(), from, to);
+  }
+  return false;
+}
+
+// Keeps `point`, met on the chain's vertices from..to, as the nearest contact, with the polygon vertex
+// or edge it lies at (a point equal to a vertex is at it). The search goes on with the segment cut
+// short at it: only a nearer point can matter, and the smaller box passes over more of the hierarchy.
+void SegmentSearch::keep_nearer(const QPoint& point, std::size_t from, std::size_t to) {
+  if (nearest_ && (nearest_->point - *s_) * u_ <= (point - *s_) * u_) return;
+  std::size_t j = from;
+  while (j < to && point != x(j) && !Segment(x(j), x(j + 1)).has_on(point)) ++j;
+  if (j < to && point == x(j + 1)) ++j;
+  nearest_ = Contact{chain_vertex(p_, *chain_, j), point == x(j), point};
+  t_ = &nearest_->point;
+  st_ = Segment(*s_, *t_);
+  around_ = box_of(*s_, *t_);
+}
+
+// The box of segment st, from intervals around its ends' coordinates.
+CGAL::Bbox_2 SegmentSearch::box_of(const QPoint& s, const QPoint& t) {
+  const Interval sx(CGAL::to_interval(s.x())), sy(CGAL::to_interval(s.y()));
+  const Interval tx(CGAL::to_interval(t.x())), ty(CGAL::to_interval(t.y()));
+  return CGAL::Bbox_2(std::min(sx.inf(), tx.inf()), std::min(sy.inf(), ty.inf()), std::max(sx.sup(), tx.sup()),
+                      std::max(sy.sup(), ty.sup()));
 }
 
 }  // namespace pd::boundary

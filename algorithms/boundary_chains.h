@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace pd::boundary {
@@ -127,6 +128,19 @@ class SegmentSearch {
   static constexpr VertexId kNoVertex = static_cast<VertexId>(-1);
   bool meets_boundary(const QPoint& s, const QPoint& t, VertexId skip = kNoVertex);
 
+  // A point of the boundary and where it lies: at polygon vertex `edge` (at_vertex), or inside the edge
+  // from vertex `edge` to the next.
+  struct Contact {
+    std::size_t edge;
+    bool at_vertex;
+    QPoint point;
+  };
+  // The first point of the boundary that the closed segment st meets, going from s, or nothing when it
+  // meets none. The same search as meets_boundary, which it runs to the end instead of stopping at the
+  // first edge met: every edge it would test is tested, and of the points met the one nearest to s is
+  // kept (a stretch of edges on the segment's line gives its end nearest to s). Pre: s != t.
+  std::optional<Contact> first_contact(const QPoint& s, const QPoint& t);
+
   std::int64_t steps() const { return steps_; }
 
  private:
@@ -142,7 +156,10 @@ class SegmentSearch {
   bool run_meets(std::size_t lo, std::size_t hi);
   bool meets(std::size_t from, std::size_t to);
   bool chain_meets(std::size_t k, VertexId skip);
-  bool box_meets(const CGAL::Bbox_2& box, const CGAL::Bbox_2& around) const;
+  bool box_meets(const CGAL::Bbox_2& box) const;
+  static CGAL::Bbox_2 box_of(const QPoint& s, const QPoint& t);
+  bool search(const QPoint& s, const QPoint& t, VertexId skip);
+  void keep_nearer(const QPoint& point, std::size_t from, std::size_t to);
   Interval line_side(double x, double y) const;
 
   const Polygon& p_;
@@ -158,8 +175,12 @@ class SegmentSearch {
   // settle most signs in floating point.
   const QPoint *s_ = nullptr, *t_ = nullptr;
   ExactKernel::Segment_2 st_;
+  CGAL::Bbox_2 around_;
   ExactKernel::Vector_2 u_;
   Interval sx_, sy_, ux_, uy_;
+  // first_contact's search: it records every point met in `nearest_` instead of stopping.
+  bool finding_nearest_ = false;
+  std::optional<Contact> nearest_;
   std::int64_t steps_ = 0;
 };
 

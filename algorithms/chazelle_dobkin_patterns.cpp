@@ -362,6 +362,10 @@ bool Patterns::sees(VertexId v, const QPoint& s) const {
 
 bool Patterns::inside(const QPoint& s, const QPoint& t) const { return !segments_.meets_boundary(s, t); }
 
+std::optional<boundary::SegmentSearch::Contact> Patterns::first_contact(const QPoint& s, const QPoint& t) const {
+  return segments_.first_contact(s, t);
+}
+
 void Patterns::report(Counters& counters) const {
   counters["x2_tests"] += x2_tests_;
   counters["x2_found"] += x2_found_;

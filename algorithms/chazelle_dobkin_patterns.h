@@ -174,6 +174,9 @@ class Patterns {
   bool sees(VertexId v, const QPoint& s) const;
   // Whether the closed segment st, between interior points, avoids P's boundary. O(r log(n/r)).
   bool inside(const QPoint& s, const QPoint& t) const;
+  // The first point of P's boundary that the closed segment st meets, going from s, and where it lies
+  // (boundary::SegmentSearch::first_contact), or nothing when st avoids the boundary. O(r log(n/r)).
+  std::optional<boundary::SegmentSearch::Contact> first_contact(const QPoint& s, const QPoint& t) const;
 
   // Counts "x2_tests", "x2_found", "x3_tests", "x3_found", "x4_tests", "x4_found", "tips" (computed),
   // "tips_found" (that exist), "segment_search_steps" (boxes of the chains' hierarchy visited,

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <cstdlib>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -25,7 +26,9 @@ namespace pd::cd {
 // contact with the boundary, a vertex included.
 class LooseRays {
  public:
-  LooseRays(const Polygon& p, const Patterns& patterns) : count_(2 * static_cast<int>(patterns.notches().size())) {
+  using Place = boundary::SegmentSearch::Contact;
+
+  LooseRays(const Polygon& p, const Patterns& patterns) : p_(p), count_(2 * static_cast<int>(patterns.notches().size())) {
     shoot(p, patterns);
     const std::size_t cells = static_cast<std::size_t>(count_) * static_cast<std::size_t>(count_);
     cross_sign_.assign(cells, 0);
@@ -66,6 +69,21 @@ class LooseRays {
     const Rational s = parameter(a, b);
     return origin_[a] + s * direction_[a];
   }
+  // Where ray a's clipped segment starts (its notch) and ends on the boundary.
+  const Place& start(int a) const { return start_[a]; }
+  const Place& end(int a) const { return end_[a]; }
+  // Which side of the directed line of ray a point y lies on: +1 left, -1 right, 0 on it.
+  int line_side(int a, const QPoint& y) const {
+    return CGAL::sign(CGAL::determinant(direction_[a], y - origin_[a]));
+  }
+  // Whether boundary place a comes before b in the order of the boundary from vertex 0 on.
+  bool before(const Place& a, const Place& b) const {
+    if (a.edge != b.edge) return a.edge < b.edge;
+    if (a.at_vertex || b.at_vertex) return a.at_vertex && !b.at_vertex;
+    const QPoint w = to_exact(p_[a.edge]);
+    const Vec e = to_exact(p_[p_.next(a.edge)]) - w;
+    return (a.point - w) * e < (b.point - w) * e;
+  }
   std::int64_t stopped_at_vertices() const { return std::count(at_vertex_.begin(), at_vertex_.end(), 1); }
   std::int64_t loose_points() const { return loose_points_; }
 
@@ -101,6 +119,8 @@ class LooseRays {
       direction_.push_back(u);
       reach_.push_back(reach);
       at_vertex_.push_back(hit->at_vertex ? 1 : 0);
+      start_.push_back({v, true, z});
+      end_.push_back({hit->vertex, hit->at_vertex, hit->at_vertex ? w : z + reach * u});
     }
   }
 
@@ -148,7 +168,9 @@ class LooseRays {
     along_.push_back(std::move(points));
   }
 
+  const Polygon& p_;
   int count_;
+  std::vector<Place> start_, end_;
   std::vector<QPoint> origin_;
   std::vector<Vec> direction_;
   std::vector<Rational> reach_;
@@ -157,6 +179,56 @@ class LooseRays {
   std::vector<int> key_;
   std::vector<std::vector<int>> along_;
   std::int64_t loose_points_ = 0;
+};
+
+// Two rays G and H apart (their clipped segments disjoint) are chords of P; between them lies the part
+// P' of P bounded by G, H and two arcs of the boundary, each from an end of G to an end of H (header,
+// (7)). The four ends in boundary order, and which end of H the arc holding a boundary point reaches.
+class ArcsBetween {
+ public:
+  using Place = LooseRays::Place;
+
+  // Ends 0 and 1 are G's notch and far end, 2 and 3 H's. Valid when the four are distinct places and
+  // G's two are neighbours in boundary order (so are H's): otherwise (rays meeting at a vertex) P' is
+  // not cut out this way and the arcs are not used.
+  ArcsBetween(const LooseRays& rays, int G, int H)
+      : rays_(rays), G_(G), ends_{&rays.start(G), &rays.end(G), &rays.start(H), &rays.end(H)} {
+    std::sort(order_.begin(), order_.end(), [&](int a, int b) { return rays_.before(*ends_[a], *ends_[b]); });
+    int g_at[2] = {0, 0};
+    for (int k = 0; k < 4; ++k) {
+      if (k > 0 && !rays_.before(*ends_[order_[k - 1]], *ends_[order_[k]])) return;
+      if (order_[k] < 2) g_at[order_[k]] = k;
+    }
+    const int apart = std::abs(g_at[0] - g_at[1]);
+    valid_ = apart == 1 || apart == 3;
+  }
+
+  bool valid() const { return valid_; }
+
+  // For Y on H not seen from X on G, with c the first point of the boundary on XY from X: an end of H
+  // (0 its notch, 1 its far end) such that X sees no point of H between Y and it (header, (7)). When c
+  // lies on an arc of P', the end that arc reaches; when it lies on the boundary beyond G, XY left X
+  // away from P', so every point of H on Y's side of G's line is unseen: the end on that side. -1 when
+  // c is one of the four ends, or beyond H (neither happens unless three loose lines meet in a point).
+  int end_of_h_reached(const Place& c, const QPoint& y) const {
+    int k = 0;
+    while (k < 4 && rays_.before(*ends_[k_th(k)], c)) ++k;
+    if (k < 4 && !rays_.before(c, *ends_[k_th(k)])) return -1;
+    const int a = k_th(k + 3), b = k_th(k);
+    if ((a < 2) != (b < 2)) return std::max(a, b) - 2;
+    if (a >= 2) return -1;
+    const int y_side = rays_.line_side(G_, y);
+    return rays_.line_side(G_, ends_[2]->point) != -y_side ? 0 : 1;
+  }
+
+ private:
+  int k_th(int k) const { return order_[static_cast<std::size_t>(k % 4)]; }
+
+  const LooseRays& rays_;
+  int G_;
+  std::array<const Place*, 4> ends_;
+  std::array<int, 4> order_{0, 1, 2, 3};
+  bool valid_ = false;
 };
 
 // A table entry: the inner notch of an X4-pattern found for this outer notch, or -1, and the sides of
@@ -184,6 +256,8 @@ class ProgramCubic final : public Program {
     counters["x4_found"] += table_witnesses_;
     counters["x4_scan_steps"] = scan_steps_;
     counters["x4_p4_tests"] = p4_tests_;
+    counters["x4_p4_sides"] = p4_sides_;
+    counters["x4_p4_sides_unknown"] = p4_sides_unknown_;
     counters["x4_lookup_steps"] = lookup_steps_;
     counters["x4_chosen"] = chosen_;
     counters["x4_chosen_from_w"] = chosen_from_w_;
@@ -287,6 +361,7 @@ class ProgramCubic final : public Program {
     bool crossing = false;
     int crossing_on_g = -1, crossing_on_h = -1;  // the ranks of G ∩ H along G and along H
     std::vector<std::optional<QPoint>> y_at_place;  // Y of each place, once a walk has needed it
+    std::optional<ArcsBetween> arcs;                // G and H apart: the arcs between them, when valid
 
     const Insert& at_place(int k) const { return inserts[static_cast<std::size_t>(by_at[static_cast<std::size_t>(k)])]; }
   };
@@ -428,7 +503,11 @@ class ProgramCubic final : public Program {
     const std::vector<int> along_g =
         stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).along + 1); });
     for (int k = 0; k < size; ++k) lists.place[static_cast<std::size_t>(lists.by_at[static_cast<std::size_t>(k)])] = k;
-    if (rays_.loose(G, H)) lists.crossing = true, lists.crossing_on_g = rays_.key(G, H), lists.crossing_on_h = rays_.key(H, G);
+    if (rays_.loose(G, H)) {
+      lists.crossing = true, lists.crossing_on_g = rays_.key(G, H), lists.crossing_on_h = rays_.key(H, G);
+    } else if (!lists.arcs.emplace(rays_, G, H).valid()) {
+      lists.arcs.reset();
+    }
     sweep_forward(queries, lists, along_g, row);
     sweep_backward(queries, lists, along_g, row);
     Pass parallel(size, true);
@@ -542,13 +621,26 @@ class ProgramCubic final : public Program {
     const int end = turn == 0 ? size : (turn > 0 ? size - places_below(bound + 1) : places_below(bound));
     const Walk walk(pass.inserted, size, turn >= 0);
     std::optional<QPoint> x;
+    const auto y_at = [&](int step) -> const QPoint& {
+      std::optional<QPoint>& y = lists.y_at_place[static_cast<std::size_t>(walk.place(step))];
+      if (!y) y = rays_.point(lists.H, lists.at_place(walk.place(step)).ray);
+      return *y;
+    };
     const auto visible = [&](int step) {
       ++scan_steps_;
       ++p4_tests_;
       if (!x) x = rays_.point(lists.G, query.ray);
-      std::optional<QPoint>& y = lists.y_at_place[static_cast<std::size_t>(walk.place(step))];
-      if (!y) y = rays_.point(lists.H, lists.at_place(walk.place(step)).ray);
-      return patterns().inside(*x, *y);
+      return patterns().inside(*x, y_at(step));
+    };
+    // Rays apart: where XY first meets the boundary tells on which side of what X sees Y lies (header,
+    // (7)). The walk starts at H's far end when it walks down.
+    const auto side_unseen = [&](int step) {
+      ++p4_sides_;
+      const QPoint& y = y_at(step);
+      const auto contact = patterns().first_contact(*x, y);
+      const int reached = contact ? lists.arcs->end_of_h_reached(*contact, y) : -1;
+      if (reached < 0) return ++p4_sides_unknown_, Side::kUnknown;
+      return reached == (turn >= 0 ? 1 : 0) ? Side::kStartSide : Side::kFarSide;
     };
     Memory& memory = pass.memory[turn >= 0 ? 0 : 1];
     int found = -1;
@@ -564,7 +656,12 @@ class ProgramCubic final : public Program {
       // Apart, what X sees moves up along H as X moves up along G (header, (6)); a walk starts at the
       // bottom when turn < 0.
       const bool moving_away = pass.forward == (turn < 0);
-      found = moving_away ? walk_apart_moving_away(walk, end, memory, visible) : walk_apart_moving_back(walk, end, memory, visible);
+      std::optional<int> searched;
+      if (lists.arcs)
+        searched = moving_away ? search_apart_moving_away(walk, end, memory, visible, side_unseen, unseen_)
+                               : search_apart_moving_back(walk, end, memory, visible, side_unseen, unseen_);
+      if (searched) found = *searched;
+      else found = moving_away ? walk_apart_moving_away(walk, end, memory, visible) : walk_apart_moving_back(walk, end, memory, visible);
     }
     if (found >= 0) record(row, q, query.ray, lists.G, lists.at_place(walk.place(found)).ray, lists.H);
   }
@@ -645,6 +742,98 @@ class ProgramCubic final : public Program {
     return -1;
   }
 
+  // The searches of rays apart (header, (7)). Along a walk, the steps X does not see before those it
+  // sees are on the start side, those after on the far side. Each returns nothing when a step's side is
+  // unknown (XY first meets the boundary at an end of G or H), for the walk of (6) to take over.
+  enum class Side { kSeen, kStartSide, kFarSide, kUnknown };
+
+  // Most walks end within their first steps, and a side costs a second search: the first kPlainSteps
+  // steps are tested in turn, as the walks of (6) do, and only then are sides asked for.
+  static constexpr int kPlainSteps = 2;
+
+  // The first inserted step in [from, limit) that X sees, or limit when there is none: kPlainSteps
+  // steps in turn, then the first step not on the start side, found by galloping and bisecting with
+  // O(log(limit - from)) probes (its side tells whether X sees it). The steps probed that X does not
+  // see go to `unseen`. Pre: X sees no step in [from, limit) before one on the start side.
+  template <class Visible, class Probe>
+  static std::optional<int> first_seen(const Walk& walk, int from, int limit, const Visible& visible, const Probe& probe,
+                                       std::vector<int>& unseen) {
+    int a = from, b = limit;
+    for (int k = 0; k < kPlainSteps; ++k) {
+      const int step = walk.first_from(a);
+      if (step >= b) return b;
+      if (visible(step)) return step;
+      unseen.push_back(step);
+      a = step + 1;
+    }
+    int found = limit;
+    const auto look = [&](int step) {
+      const Side side = probe(step);
+      if (side == Side::kUnknown) return false;
+      if (side != Side::kSeen) unseen.push_back(step);
+      if (side == Side::kStartSide) {
+        a = step + 1;
+      } else {
+        b = step;
+        found = side == Side::kSeen ? step : limit;
+      }
+      return true;
+    };
+    for (int gap = 1; a < b; gap *= 2) {
+      const int at = std::min(b, a + gap - 1), step = walk.first_from(at);
+      if (step >= b) {
+        b = at;
+        break;
+      }
+      if (!look(step)) return std::nullopt;
+      if (b == step) break;
+    }
+    while (a < b) {
+      const int mid = a + (b - a) / 2, step = walk.first_from(mid);
+      if (step >= b) b = mid;
+      else if (!look(step)) return std::nullopt;
+    }
+    return found;
+  }
+
+  // What X sees moves away from the walk's start along the pass: the search starts after the steps no
+  // later X sees, and records what (6) allows of the steps X did not see.
+  template <class Visible, class SideUnseen>
+  static std::optional<int> search_apart_moving_away(const Walk& walk, int end, Memory& memory, const Visible& visible,
+                                                     const SideUnseen& side_unseen, std::vector<int>& unseen) {
+    // A step up to the furthest seen by an earlier X, not seen by X, is on the start side (6).
+    const auto probe = [&](int step) {
+      if (visible(step)) return Side::kSeen;
+      return step <= memory.reach ? Side::kStartSide : side_unseen(step);
+    };
+    unseen.clear();
+    const auto found = first_seen(walk, memory.blocked_to + 1, end, visible, probe, unseen);
+    if (!found) return std::nullopt;
+    if (*found < end) memory.reach = std::max(memory.reach, *found);
+    for (const int step : unseen)
+      if (step <= memory.reach) memory.blocked_to = std::max(memory.blocked_to, step);
+    return *found < end ? *found : -1;
+  }
+
+  // ... and back towards it: the search stops before the steps no later X sees.
+  template <class Visible, class SideUnseen>
+  static std::optional<int> search_apart_moving_back(const Walk& walk, int end, Memory& memory, const Visible& visible,
+                                                     const SideUnseen& side_unseen, std::vector<int>& unseen) {
+    // A step at or after the nearest seen by an earlier X, not seen by X, is on the far side (6).
+    const auto probe = [&](int step) {
+      if (visible(step)) return Side::kSeen;
+      return step >= memory.seen_nearest ? Side::kFarSide : side_unseen(step);
+    };
+    unseen.clear();
+    const int limit = std::min(end, memory.blocked_from);
+    const auto found = first_seen(walk, 0, limit, visible, probe, unseen);
+    if (!found) return std::nullopt;
+    if (*found < limit) memory.seen_nearest = std::min(memory.seen_nearest, *found);
+    for (const int step : unseen)
+      if (step >= memory.seen_nearest) memory.blocked_from = std::min(memory.blocked_from, step);
+    return *found < limit ? *found : -1;
+  }
+
   void record(Row& row, int q, int Q, int G, int M, int H) {
     if (row.empty()) row.assign(static_cast<std::size_t>(notch_count_), Witness{});
     const auto bit = [](int ray, int shift) { return static_cast<std::uint8_t>((ray & 1) << shift); };
@@ -657,6 +846,8 @@ class ProgramCubic final : public Program {
   LooseRays rays_;
   std::vector<Row> rows_;  // at(g, h): the row of interval (g, h), empty when it has no witness
   Walks walks_;
+  std::vector<int> unseen_;  // the steps a search of rays apart probed and X did not see
+  std::int64_t p4_sides_ = 0, p4_sides_unknown_ = 0;
   std::int64_t table_entries_ = 0, table_witnesses_ = 0, scan_steps_ = 0, p4_tests_ = 0, lookup_steps_ = 0, chosen_ = 0,
                chosen_from_w_ = 0;
 };

@@ -1,12 +1,14 @@
 // Segments against the convex chains of a polygon's boundary (algorithms/boundary_chains.h), against
 // testing every edge: on every generator family, for segments between vertices (along edges and
 // through collinear vertices on the axis-parallel families), points on edges and points in the
-// bounding box, with and without the edges at a vertex left out.
+// bounding box, with and without the edges at a vertex left out; and the first point met from a
+// segment's start, against the nearest of the points met on every edge.
 #include "algorithms/boundary_chains.h"
 #include "generators/family.h"
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -26,6 +28,33 @@ bool meets_by_every_edge(const Polygon& p, const std::vector<QPoint>& x, const Q
   return false;
 }
 
+// The first contact from s by testing every edge: the point met nearest to s, and the vertex it equals
+// or the edge it lies inside.
+std::optional<boundary::SegmentSearch::Contact> first_contact_by_every_edge(const Polygon& p, const std::vector<QPoint>& x,
+                                                                            const QPoint& s, const QPoint& t) {
+  const ExactSegment st(s, t);
+  std::optional<QPoint> nearest;
+  const auto keep = [&](const QPoint& q) {
+    if (!nearest || (q - s) * (t - s) < (*nearest - s) * (t - s)) nearest = q;
+  };
+  for (std::size_t e = 0; e < p.size(); ++e) {
+    const auto met = CGAL::intersection(st, ExactSegment(x[e], x[p.next(e)]));
+    if (!met) continue;
+    if (const QPoint* q = boost::get<QPoint>(&*met)) {
+      keep(*q);
+    } else {
+      keep(boost::get<ExactSegment>(*met).source());
+      keep(boost::get<ExactSegment>(*met).target());
+    }
+  }
+  if (!nearest) return std::nullopt;
+  for (std::size_t e = 0; e < p.size(); ++e)
+    if (x[e] == *nearest) return boundary::SegmentSearch::Contact{e, true, *nearest};
+  for (std::size_t e = 0; e < p.size(); ++e)
+    if (ExactSegment(x[e], x[p.next(e)]).has_on(*nearest)) return boundary::SegmentSearch::Contact{e, false, *nearest};
+  return std::nullopt;
+}
+
 QPoint along(const QPoint& a, const QPoint& b, const Rational& f) {
   return QPoint(a.x() + f * (b.x() - a.x()), a.y() + f * (b.y() - a.y()));
 }
@@ -39,8 +68,13 @@ std::vector<QPoint> endpoints(const Polygon& p, const std::vector<QPoint>& x, st
   for (const QPoint& q : x)
     lo_x = std::min(lo_x, q.x()), hi_x = std::max(hi_x, q.x()), lo_y = std::min(lo_y, q.y()), hi_y = std::max(hi_y, q.y());
   std::uniform_int_distribution<int> step(0, 64);
+  const auto fraction = [&] {
+    Rational f(step(rng), 64);
+    f.canonicalize();  // GMP's arithmetic expects its operands in lowest terms
+    return f;
+  };
   for (std::size_t k = 0; k < p.size(); ++k)
-    out.emplace_back(lo_x + (hi_x - lo_x) * Rational(step(rng), 64), lo_y + (hi_y - lo_y) * Rational(step(rng), 64));
+    out.emplace_back(lo_x + (hi_x - lo_x) * fraction(), lo_y + (hi_y - lo_y) * fraction());
   return out;
 }
 
@@ -77,6 +111,45 @@ TEST(BoundaryChains, SegmentSearchAgreesWithEveryEdge) {
   EXPECT_GE(polygons, 10);
   EXPECT_GT(meeting, 1000);
   EXPECT_GT(missing, 1000);
+}
+
+TEST(BoundaryChains, FirstContactIsTheNearestPointMet) {
+  std::mt19937_64 rng(11);
+  int polygons = 0, meeting = 0, at_vertices = 0;
+  for (const Family& family : families()) {
+    for (std::size_t n : {40, 160}) {
+      std::vector<Point> ring;
+      try {
+        ring = generate(family.name, n, std::nullopt, 5);
+      } catch (const GeneratorError&) {
+        continue;
+      }
+      const Polygon p = Polygon::make(ring);
+      std::vector<QPoint> x;
+      for (const Point& v : p.vertices()) x.push_back(to_exact(v));
+      boundary::SegmentSearch search(p, x);
+      const std::vector<QPoint> ends = endpoints(p, x, rng);
+      std::uniform_int_distribution<std::size_t> pick(0, ends.size() - 1);
+      ++polygons;
+      for (int k = 0; k < 1000; ++k) {
+        const QPoint s = ends[pick(rng)], t = ends[pick(rng)];
+        if (s == t) continue;
+        const auto expected = first_contact_by_every_edge(p, x, s, t);
+        const auto found = search.first_contact(s, t);
+        ASSERT_EQ(found.has_value(), expected.has_value()) << family.name << " n=" << n << " s=" << s << " t=" << t;
+        ASSERT_EQ(search.meets_boundary(s, t), expected.has_value());
+        if (!expected) continue;
+        ASSERT_TRUE(found->point == expected->point && found->edge == expected->edge && found->at_vertex == expected->at_vertex)
+            << family.name << " n=" << n << " s=" << s << " t=" << t << ": " << found->point << " at " << found->edge
+            << " against " << expected->point << " at " << expected->edge;
+        ++meeting;
+        at_vertices += expected->at_vertex;
+      }
+    }
+  }
+  EXPECT_GE(polygons, 10);
+  EXPECT_GT(meeting, 2500);
+  EXPECT_GT(at_vertices, 500);
 }
 
 }  // namespace

@@ -754,7 +754,8 @@ TEST(ChazelleDobkinTables, RowsHoldExactlyTheLooseX4OfTightInnerNotches) {
 }
 
 // The walks of a pass skip the Y that earlier walks proved X cannot see (crossing rays: the triangle X c Y;
-// rays apart: the convex quadrilateral of two segments in P; header of algorithms/chazelle_dobkin_cubic.cpp).
+// rays apart: the convex quadrilateral of two segments in P, and the searches that bisect on the side of
+// the first contact; header of algorithms/chazelle_dobkin_cubic.cpp, (6) and (7)).
 // Each walk must still stop at the same Y as a walk that tests every Y in turn: every entry of every row,
 // inner notch and rays, the same in both on polygons of every family large enough for long passes (and
 // each rotated by a third), and the skips must save tests.
@@ -773,7 +774,10 @@ TEST(ChazelleDobkinTables, CarriedOverWalksFindTheWitnessesOfWalksAlone) {
   // Where a walk of rays apart whose seen Y move back stopped one Y too early would lose a witness
   // (row (3, 13) at outer notch 2; found by a stress run over 125,815 polygons).
   polygons.emplace_back(rotated(make({"random", 22, 16, 2}), 12), "random n=22 r=16 seed=2 rotated 12");
-  std::int64_t carried_tests = 0, alone_tests = 0, witnesses = 0;
+  // Long passes of rays apart, where the searches of (7) probe past the first steps.
+  const Polygon notch_heavy = Polygon::make(generate("notch-heavy", 80, std::nullopt, 1));
+  for (std::size_t by : {0, 27}) polygons.emplace_back(rotated(notch_heavy, by), "notch-heavy n=80 rotated " + std::to_string(by));
+  std::int64_t carried_tests = 0, alone_tests = 0, witnesses = 0, sides = 0, sides_unknown = 0;
   for (const auto& [p, where] : polygons) {
     cd::ProgramCubic carried(p), alone(p, cd::ProgramCubic::Walks::kEachAlone);
     Counters carried_counters, alone_counters;
@@ -793,9 +797,14 @@ TEST(ChazelleDobkinTables, CarriedOverWalksFindTheWitnessesOfWalksAlone) {
         }
     carried_tests += carried_counters["x4_p4_tests"];
     alone_tests += alone_counters["x4_p4_tests"];
+    sides += carried_counters["x4_p4_sides"];
+    sides_unknown += carried_counters["x4_p4_sides_unknown"];
   }
   EXPECT_GT(witnesses, 5000);
   EXPECT_LT(carried_tests, alone_tests);
+  // The searches of rays apart ran, and none had to hand over to a walk (header, (7)).
+  EXPECT_GT(sides, 200);
+  EXPECT_EQ(sides_unknown, 0);
 }
 
 // The list steps of the scans (walks to P4 tests aside) and STEP 3's lookups grow as r^3 at most: the
