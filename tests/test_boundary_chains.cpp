@@ -78,76 +78,78 @@ std::vector<QPoint> endpoints(const Polygon& p, const std::vector<QPoint>& x, st
   return out;
 }
 
-TEST(BoundaryChains, SegmentSearchAgreesWithEveryEdge) {
-  std::mt19937_64 rng(7);
-  int polygons = 0, meeting = 0, missing = 0;
-  for (const Family& family : families()) {
+// A polygon of each family at n = 40 and at 160 (where the family can make it), with its vertices as
+// rationals.
+struct Case {
+  std::string label;
+  Polygon p;
+  std::vector<QPoint> x;
+};
+
+std::vector<Case> cases(std::uint64_t seed) {
+  std::vector<Case> out;
+  for (const Family& family : families())
     for (std::size_t n : {40, 160}) {
       std::vector<Point> ring;
       try {
-        ring = generate(family.name, n, std::nullopt, 3);
+        ring = generate(family.name, n, std::nullopt, seed);
       } catch (const GeneratorError&) {
         continue;
       }
-      const Polygon p = Polygon::make(ring);
-      std::vector<QPoint> x;
-      for (const Point& v : p.vertices()) x.push_back(to_exact(v));
-      boundary::SegmentSearch search(p, x);
-      const std::vector<QPoint> ends = endpoints(p, x, rng);
-      std::uniform_int_distribution<std::size_t> pick(0, ends.size() - 1), vertex(0, p.size() - 1);
-      ++polygons;
-      for (int k = 0; k < 3000; ++k) {
-        const bool from_vertex = k % 2 == 0;
-        const VertexId skip = from_vertex ? static_cast<VertexId>(vertex(rng)) : boundary::SegmentSearch::kNoVertex;
-        const QPoint s = from_vertex ? x[skip] : ends[pick(rng)], t = ends[pick(rng)];
-        if (s == t) continue;
-        const bool expected = meets_by_every_edge(p, x, s, t, skip);
-        ASSERT_EQ(search.meets_boundary(s, t, skip), expected)
-            << family.name << " n=" << n << " s=" << s << " t=" << t << " skip=" << skip;
-        (expected ? meeting : missing) += 1;
-      }
+      Case c{family.name + " n=" + std::to_string(n), Polygon::make(ring), {}};
+      for (const Point& v : c.p.vertices()) c.x.push_back(to_exact(v));
+      out.push_back(std::move(c));
+    }
+  return out;
+}
+
+TEST(BoundaryChains, SegmentSearchAgreesWithEveryEdge) {
+  std::mt19937_64 rng(7);
+  int meeting = 0, missing = 0;
+  const std::vector<Case> all = cases(3);
+  for (const auto& [label, p, x] : all) {
+    boundary::SegmentSearch search(p, x);
+    const std::vector<QPoint> ends = endpoints(p, x, rng);
+    std::uniform_int_distribution<std::size_t> pick(0, ends.size() - 1), vertex(0, p.size() - 1);
+    for (int k = 0; k < 3000; ++k) {
+      const bool from_vertex = k % 2 == 0;
+      const VertexId skip = from_vertex ? static_cast<VertexId>(vertex(rng)) : boundary::SegmentSearch::kNoVertex;
+      const QPoint s = from_vertex ? x[skip] : ends[pick(rng)], t = ends[pick(rng)];
+      if (s == t) continue;
+      const bool expected = meets_by_every_edge(p, x, s, t, skip);
+      ASSERT_EQ(search.meets_boundary(s, t, skip), expected) << label << " s=" << s << " t=" << t << " skip=" << skip;
+      (expected ? meeting : missing) += 1;
     }
   }
-  EXPECT_GE(polygons, 10);
+  EXPECT_GE(all.size(), 10u);
   EXPECT_GT(meeting, 1000);
   EXPECT_GT(missing, 1000);
 }
 
 TEST(BoundaryChains, FirstContactIsTheNearestPointMet) {
   std::mt19937_64 rng(11);
-  int polygons = 0, meeting = 0, at_vertices = 0;
-  for (const Family& family : families()) {
-    for (std::size_t n : {40, 160}) {
-      std::vector<Point> ring;
-      try {
-        ring = generate(family.name, n, std::nullopt, 5);
-      } catch (const GeneratorError&) {
-        continue;
-      }
-      const Polygon p = Polygon::make(ring);
-      std::vector<QPoint> x;
-      for (const Point& v : p.vertices()) x.push_back(to_exact(v));
-      boundary::SegmentSearch search(p, x);
-      const std::vector<QPoint> ends = endpoints(p, x, rng);
-      std::uniform_int_distribution<std::size_t> pick(0, ends.size() - 1);
-      ++polygons;
-      for (int k = 0; k < 1000; ++k) {
-        const QPoint s = ends[pick(rng)], t = ends[pick(rng)];
-        if (s == t) continue;
-        const auto expected = first_contact_by_every_edge(p, x, s, t);
-        const auto found = search.first_contact(s, t);
-        ASSERT_EQ(found.has_value(), expected.has_value()) << family.name << " n=" << n << " s=" << s << " t=" << t;
-        ASSERT_EQ(search.meets_boundary(s, t), expected.has_value());
-        if (!expected) continue;
-        ASSERT_TRUE(found->point == expected->point && found->edge == expected->edge && found->at_vertex == expected->at_vertex)
-            << family.name << " n=" << n << " s=" << s << " t=" << t << ": " << found->point << " at " << found->edge
-            << " against " << expected->point << " at " << expected->edge;
-        ++meeting;
-        at_vertices += expected->at_vertex;
-      }
+  int meeting = 0, at_vertices = 0;
+  const std::vector<Case> all = cases(5);
+  for (const auto& [label, p, x] : all) {
+    boundary::SegmentSearch search(p, x);
+    const std::vector<QPoint> ends = endpoints(p, x, rng);
+    std::uniform_int_distribution<std::size_t> pick(0, ends.size() - 1);
+    for (int k = 0; k < 1000; ++k) {
+      const QPoint s = ends[pick(rng)], t = ends[pick(rng)];
+      if (s == t) continue;
+      const auto expected = first_contact_by_every_edge(p, x, s, t);
+      const auto found = search.first_contact(s, t);
+      ASSERT_EQ(found.has_value(), expected.has_value()) << label << " s=" << s << " t=" << t;
+      ASSERT_EQ(search.meets_boundary(s, t), expected.has_value());
+      if (!expected) continue;
+      ASSERT_TRUE(found->point == expected->point && found->edge == expected->edge && found->at_vertex == expected->at_vertex)
+          << label << " s=" << s << " t=" << t << ": " << found->point << " at " << found->edge << " against "
+          << expected->point << " at " << expected->edge;
+      ++meeting;
+      at_vertices += expected->at_vertex;
     }
   }
-  EXPECT_GE(polygons, 10);
+  EXPECT_GE(all.size(), 10u);
   EXPECT_GT(meeting, 2500);
   EXPECT_GT(at_vertices, 500);
 }
