@@ -98,15 +98,14 @@
 //         nor a later X sees Y or a Y after it (the walk stops). (The same holds for crossing rays;
 //         the cases differ in what the walks cost, (a) bounding it.)
 // (7) For rays apart, where XY first meets the boundary tells on which side of what X sees Y lies (not
-//     in the OCR text; proven here). Let the four ends of G and H be distinct boundary points, G's two
-//     neighbours in boundary order (ArcsBetween; else, as when a ray stops at the other's notch, the
-//     walks of (6) run). G and H are then disjoint chords of P; between them lies the part P' bounded
-//     by G, an arc A of the boundary from an end of G to an end a of H, H, and an arc B from H's other
-//     end b back to G; beyond G lies the part bounded by G and the boundary between G's ends. Take X on
-//     G and Y on H (open), XY meeting the boundary first at c, going from X (first_contact). XY meets
-//     G's line only at X and H's only at Y: else c is an end of G or H, the side is unknown and the
-//     walk of (6) takes over (this needs three loose lines through one point; it never happened on the
-//     15,000 polygons of a stress run, every family, r = 6..32, rotated, nor at r = 48..80).
+//     in the OCR text; proven here). G and H are chords of P, disjoint but perhaps for a shared end (a
+//     ray stopping at the other's notch, or both at one boundary point); two such chords do not
+//     interleave on the boundary (ArcsBetween). Between them lies the part P' bounded by G, an arc A
+//     of the boundary from an end of G to an end a of H, H, and an arc B from H's other end b back to
+//     G (a single point where G and H share an end); beyond G lies the part bounded by G and the
+//     boundary between G's ends. Take X on G and Y on H (open), XY meeting the boundary first at c,
+//     going from X (first_contact). By (4), Y lies strictly right of G's line and X of H's, so XY
+//     meets G's line only at X and H's only at Y, and c is no end of G or H.
 //     (i) c on A: X sees no point Y' of H between Y and a. Else the chord XY' cuts P' into P_a (XY',
 //         H from Y' to a, A, part of G) and P_b (XY', H from Y' to b, Y on it, B, the rest of G). The
 //         triangle X Y' Y lies on one side of the line XY', near Y' the side of P_b (XY' reaches Y'
@@ -128,8 +127,7 @@
 //     first_contact. Most walks end at once: the first two steps are tested in turn without asking
 //     their sides (kPlainSteps), and a step not seen that (6) already places (at or before the
 //     furthest step an earlier X saw, or at or after the nearest) needs no first_contact. What the
-//     searches record for later X is what (6) allows for the steps they tested, so the walks of
-//     crossing rays and of rays apart share one Memory.
+//     searches record for later X is what (6) allows for the steps they tested.
 // Proven: every witness is an X4-pattern, so the output is always a valid decomposition, with at most
 // the optimum's patterns. Assumed, not proven (call it A18'): whenever a tight X4-pattern in
 // chazelle-dobkin-n5's sense (tips of Q, Theorem 15) exists, some loose one on tight notches exists too
@@ -155,18 +153,18 @@
 //   ("segment_search_steps" per "x4_p4_tests").
 // - The walks of (6) reach O(1) amortized tests per query for crossing rays (a pass tests O(r) Y
 //   besides at most two per query), the searches of (7) O(log r) per query for rays apart, each
-//   failing test followed by a first_contact; the walk of (6) that a search hands over to where a
-//   side is unknown tests O(r) Y per query in the worst case. The thesis's scans presumably test O(1)
-//   per query; how is in the lost text. Measured, seed 1, "x4_p4_tests": walks each alone
-//   (Walks::kEachAlone) / the walks of (6) alone, before (7) / with (7), and "x4_p4_sides": notch-heavy
-//   n = 50, 100, 200, 400: 3,870 / 3,517 / 3,517 (14); 49,877 / 35,867 / 35,362 (586); 557,553 /
-//   316,259 / 306,687 (6,152); 7,514,640 / 2,853,715 / 2,627,417 (78,028), for 3,262, 31,442, 270,966
-//   and 2,279,469 witnesses; random n = 2000, r = 100 and 200: 9,050 / 8,160 / 8,207 (290) and
-//   82,454 / 69,449 / 59,410 (5,469), for 4,467 and 29,758 witnesses; no side unknown. The first
-//   contacts cost about what the tests saved ("segment_search_steps" at notch-heavy n = 400
-//   118,120,108 before (7), 117,362,561 with it; random r = 200 2,442,827 and 2,418,075), and the
-//   time rose 3-6% (user time, median of 5 alternating runs: random r = 200 4.01 s to 4.14 s,
-//   notch-heavy n = 200 3.19 s to 3.38 s): (7) bounds the worst case, it does not speed up these.
+//   failing test followed by a first_contact. The thesis's scans presumably test O(1) per query; how
+//   is in the lost text. Measured, seed 1, "x4_p4_tests": walks each alone (Walks::kEachAlone) / the
+//   walks of (6) alone, before (7) / with (7), and "x4_p4_sides": notch-heavy n = 50, 100, 200, 400:
+//   3,870 / 3,517 / 3,515 (19); 49,877 / 35,867 / 35,362 (586); 557,553 / 316,259 / 306,687 (6,152);
+//   7,514,640 / 2,853,715 / 2,627,417 (78,028), for 3,262, 31,442, 270,966 and 2,279,469 witnesses;
+//   random n = 2000, r = 100 and 200: 9,050 / 8,160 / 8,084 (290) and 82,454 / 69,449 / 58,858
+//   (5,469), for 4,467 and 29,758 witnesses. The first contacts cost about what the tests saved
+//   ("segment_search_steps" at notch-heavy n = 400 118,120,108 before (7), 117,362,561 with it;
+//   random r = 200 2,442,827 and 2,396,616). User time, median of 5 runs alternating with the
+//   build before (7): random r = 200 4.01 s then 4.14 s, notch-heavy n = 200 3.19 s then 3.38 s;
+//   in a later, noisier set 4.05 s then 4.21 s and 4.11 s then 3.98 s. (7) bounds the worst case;
+//   it does not speed up these.
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
 //   superranges; see chazelle_dobkin_patterns.h).
@@ -176,9 +174,7 @@
 // O(r^3) lookups; the scans O(r^3) list steps (a PlaceSet operation is O(1) for r < 32768) plus the
 // P4 tests and first contacts, O(r log(n/r)) each: O(r) per pass and at most two per query for
 // crossing rays, O(log r) per query for rays apart (7), so O(r^3 log r) of them over the O(r^3)
-// queries (O(r) per interval) and O(n log n + n r + r^4 log r log(n/r)) in all, unless a side is
-// unknown (three loose lines through a point), where a walk of (6) tests O(r) per query: the worst
-// case, O(n log n + n r + r^5 log(n/r)), is chazelle-dobkin-n5's. Space
+// queries (O(r) per interval). Worst case O(n log n + n r + r^4 log r log(n/r)). Space
 // O(n + r^3) (a row per interval with a witness) plus O(r^2) rationals for the lists. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
 // convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
 //
@@ -187,7 +183,6 @@
 // unary conditions), "x4_table_witnesses" (entries with a pattern, also added to "x4_found"),
 // "x4_scan_steps" (list positions visited while filling, walks included), "x4_p4_tests" (segments XY
 // tested), "x4_p4_sides" (first contacts asked for by the searches of rays apart, (7)),
-// "x4_p4_sides_unknown" (those that left the side unknown, the walk of (6) taking over),
 // "x4_lookup_steps" (STEP 3's lookups), "x4_chosen" (intervals whose S was reached by an X4-pattern)
 // and "x4_chosen_from_w" (those from W's pairing).
 #include "algorithms/chazelle_dobkin_tables.h"
@@ -204,7 +199,7 @@ Decomposition chazelle_dobkin(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*log(n)+n*r+r^5*log(n/r)", "== OPT",
+REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*log(n)+n*r+r^4*log(r)*log(n/r)", "== OPT",
                              "Chazelle thesis (000) Sec. 2.4, Def. 2.4, Thm 18, Lemma 9", 20000, chazelle_dobkin});
 
 }  // namespace pd

@@ -181,42 +181,46 @@ class LooseRays {
   std::int64_t loose_points_ = 0;
 };
 
-// Two rays G and H apart (their clipped segments disjoint) are chords of P; between them lies the part
-// P' of P bounded by G, H and two arcs of the boundary, each from an end of G to an end of H (header,
-// (7)). The four ends in boundary order, and which end of H the arc holding a boundary point reaches.
+// Two rays G and H apart (their clipped segments disjoint but for a shared end) are chords of P;
+// between them lies the part P' of P bounded by G, H and two arcs of the boundary, each from an end of
+// G to an end of H, one of them a single point where G and H share an end (header, (7)). The four ends
+// in boundary order, and which end of H the stretch of H unseen from X through Y reaches.
 class ArcsBetween {
  public:
   using Place = LooseRays::Place;
 
-  // Ends 0 and 1 are G's notch and far end, 2 and 3 H's. Valid when the four are distinct places and
-  // G's two are neighbours in boundary order (so are H's): otherwise (rays meeting at a vertex) P' is
-  // not cut out this way and the arcs are not used.
+  // Ends 0 and 1 are G's notch and far end, 2 and 3 H's. Two disjoint chords do not interleave on the
+  // boundary: G's ends are neighbours in boundary order, and so are H's. A shared end (a ray stopping
+  // at the other's notch, or both at one point) is listed twice, in the order that keeps them so.
   ArcsBetween(const LooseRays& rays, int G, int H)
       : rays_(rays), G_(G), ends_{&rays.start(G), &rays.end(G), &rays.start(H), &rays.end(H)} {
-    std::sort(order_.begin(), order_.end(), [&](int a, int b) { return rays_.before(*ends_[a], *ends_[b]); });
-    int g_at[2] = {0, 0};
-    for (int k = 0; k < 4; ++k) {
-      if (k > 0 && !rays_.before(*ends_[order_[k - 1]], *ends_[order_[k]])) return;
-      if (order_[k] < 2) g_at[order_[k]] = k;
+    for (const bool g_first : {true, false}) {
+      order_ = {0, 1, 2, 3};
+      std::sort(order_.begin(), order_.end(), [&](int a, int b) {
+        if (rays_.before(*ends_[a], *ends_[b])) return true;
+        if (rays_.before(*ends_[b], *ends_[a]) || (a < 2) == (b < 2)) return false;
+        return (a < 2) == g_first;
+      });
+      int g_at[2] = {0, 0};
+      for (int k = 0; k < 4; ++k)
+        if (order_[k] < 2) g_at[order_[k]] = k;
+      const int apart = std::abs(g_at[0] - g_at[1]);
+      if (apart == 1 || apart == 3) return;
     }
-    const int apart = std::abs(g_at[0] - g_at[1]);
-    valid_ = apart == 1 || apart == 3;
+    throw std::logic_error("chazelle-dobkin: two rays apart interleave on the boundary");
   }
-
-  bool valid() const { return valid_; }
 
   // For Y on H not seen from X on G, with c the first point of the boundary on XY from X: an end of H
   // (0 its notch, 1 its far end) such that X sees no point of H between Y and it (header, (7)). When c
   // lies on an arc of P', the end that arc reaches; when it lies on the boundary beyond G, XY left X
-  // away from P', so every point of H on Y's side of G's line is unseen: the end on that side. -1 when
-  // c is one of the four ends, or beyond H (neither happens unless three loose lines meet in a point).
+  // away from P', so every point of H on Y's side of G's line is unseen: the end on that side.
   int end_of_h_reached(const Place& c, const QPoint& y) const {
     int k = 0;
     while (k < 4 && rays_.before(*ends_[k_th(k)], c)) ++k;
-    if (k < 4 && !rays_.before(c, *ends_[k_th(k)])) return -1;
     const int a = k_th(k + 3), b = k_th(k);
+    if ((k < 4 && !rays_.before(c, *ends_[b])) || (a >= 2 && b >= 2))
+      throw std::logic_error("chazelle-dobkin: XY first meets the boundary at an end of G or H, or beyond H");
     if ((a < 2) != (b < 2)) return std::max(a, b) - 2;
-    if (a >= 2) return -1;
     const int y_side = rays_.line_side(G_, y);
     return rays_.line_side(G_, ends_[2]->point) != -y_side ? 0 : 1;
   }
@@ -227,8 +231,7 @@ class ArcsBetween {
   const LooseRays& rays_;
   int G_;
   std::array<const Place*, 4> ends_;
-  std::array<int, 4> order_{0, 1, 2, 3};
-  bool valid_ = false;
+  std::array<int, 4> order_{};
 };
 
 // A table entry: the inner notch of an X4-pattern found for this outer notch, or -1, and the sides of
@@ -257,7 +260,6 @@ class ProgramCubic final : public Program {
     counters["x4_scan_steps"] = scan_steps_;
     counters["x4_p4_tests"] = p4_tests_;
     counters["x4_p4_sides"] = p4_sides_;
-    counters["x4_p4_sides_unknown"] = p4_sides_unknown_;
     counters["x4_lookup_steps"] = lookup_steps_;
     counters["x4_chosen"] = chosen_;
     counters["x4_chosen_from_w"] = chosen_from_w_;
@@ -361,7 +363,7 @@ class ProgramCubic final : public Program {
     bool crossing = false;
     int crossing_on_g = -1, crossing_on_h = -1;  // the ranks of G ∩ H along G and along H
     std::vector<std::optional<QPoint>> y_at_place;  // Y of each place, once a walk has needed it
-    std::optional<ArcsBetween> arcs;                // G and H apart: the arcs between them, when valid
+    std::optional<ArcsBetween> arcs;                // G and H apart: the arcs between them
 
     const Insert& at_place(int k) const { return inserts[static_cast<std::size_t>(by_at[static_cast<std::size_t>(k)])]; }
   };
@@ -505,8 +507,8 @@ class ProgramCubic final : public Program {
     for (int k = 0; k < size; ++k) lists.place[static_cast<std::size_t>(lists.by_at[static_cast<std::size_t>(k)])] = k;
     if (rays_.loose(G, H)) {
       lists.crossing = true, lists.crossing_on_g = rays_.key(G, H), lists.crossing_on_h = rays_.key(H, G);
-    } else if (!lists.arcs.emplace(rays_, G, H).valid()) {
-      lists.arcs.reset();
+    } else {
+      lists.arcs.emplace(rays_, G, H);
     }
     sweep_forward(queries, lists, along_g, row);
     sweep_backward(queries, lists, along_g, row);
@@ -638,9 +640,8 @@ class ProgramCubic final : public Program {
       ++p4_sides_;
       const QPoint& y = y_at(step);
       const auto contact = patterns().first_contact(*x, y);
-      const int reached = contact ? lists.arcs->end_of_h_reached(*contact, y) : -1;
-      if (reached < 0) return ++p4_sides_unknown_, Side::kUnknown;
-      return reached == (turn >= 0 ? 1 : 0) ? Side::kStartSide : Side::kFarSide;
+      if (!contact) throw std::logic_error("chazelle-dobkin: an unseen XY meets no boundary");
+      return lists.arcs->end_of_h_reached(*contact, y) == (turn >= 0 ? 1 : 0) ? Side::kStartSide : Side::kFarSide;
     };
     Memory& memory = pass.memory[turn >= 0 ? 0 : 1];
     int found = -1;
@@ -656,12 +657,8 @@ class ProgramCubic final : public Program {
       // Apart, what X sees moves up along H as X moves up along G (header, (6)); a walk starts at the
       // bottom when turn < 0.
       const bool moving_away = pass.forward == (turn < 0);
-      std::optional<int> searched;
-      if (lists.arcs)
-        searched = moving_away ? search_apart_moving_away(walk, end, memory, visible, side_unseen, unseen_)
-                               : search_apart_moving_back(walk, end, memory, visible, side_unseen, unseen_);
-      if (searched) found = *searched;
-      else found = moving_away ? walk_apart_moving_away(walk, end, memory, visible) : walk_apart_moving_back(walk, end, memory, visible);
+      found = moving_away ? search_apart_moving_away(walk, end, memory, visible, side_unseen, unseen_)
+                          : search_apart_moving_back(walk, end, memory, visible, side_unseen, unseen_);
     }
     if (found >= 0) record(row, q, query.ray, lists.G, lists.at_place(walk.place(found)).ray, lists.H);
   }
@@ -707,69 +704,35 @@ class ProgramCubic final : public Program {
     return first < end && visible(first) ? first : -1;
   }
 
-  // The walks of rays apart (header, (6)), when what X sees moves away from the walk's start along the
-  // pass: a step not seen by X, with a step at or after it seen by X or an earlier X, is seen by no
-  // later X, nor is any step before it.
-  template <class Visible>
-  static int walk_apart_moving_away(const Walk& walk, int end, Memory& memory, const Visible& visible) {
-    int failed = -1;
-    for (int step = walk.first_from(memory.blocked_to + 1); step < end; step = walk.first_from(step + 1)) {
-      if (visible(step)) {
-        memory.blocked_to = std::max(memory.blocked_to, failed);
-        memory.reach = std::max(memory.reach, step);
-        return step;
-      }
-      failed = step;
-      if (step <= memory.reach) memory.blocked_to = step;
-    }
-    return -1;
-  }
-
-  // ... and when it moves back towards the walk's start: a step not seen by X, with a step at or before it
-  // seen by an earlier X, is seen neither by X nor by a later X, nor is any step after it.
-  template <class Visible>
-  static int walk_apart_moving_back(const Walk& walk, int end, Memory& memory, const Visible& visible) {
-    for (int step = walk.first_from(0); step < std::min(end, memory.blocked_from); step = walk.first_from(step + 1)) {
-      if (visible(step)) {
-        memory.seen_nearest = std::min(memory.seen_nearest, step);
-        return step;
-      }
-      if (step >= memory.seen_nearest) {
-        memory.blocked_from = step;
-        return -1;
-      }
-    }
-    return -1;
-  }
-
   // The searches of rays apart (header, (7)). Along a walk, the steps X does not see before those it
-  // sees are on the start side, those after on the far side. Each returns nothing when a step's side is
-  // unknown (XY first meets the boundary at an end of G or H), for the walk of (6) to take over.
-  enum class Side { kSeen, kStartSide, kFarSide, kUnknown };
+  // sees are on the start side, those after on the far side; kUnseen is a step not seen whose side was
+  // not asked for.
+  enum class Side { kSeen, kStartSide, kFarSide, kUnseen };
 
   // Most walks end within their first steps, and a side costs a second search: the first kPlainSteps
-  // steps are tested in turn, as the walks of (6) do, and only then are sides asked for.
+  // steps are tested in turn, as the walks of (6) do, asking no side that (6) does not already give.
   static constexpr int kPlainSteps = 2;
 
   // The first inserted step in [from, limit) that X sees, or limit when there is none: kPlainSteps
   // steps in turn, then the first step not on the start side, found by galloping and bisecting with
-  // O(log(limit - from)) probes (its side tells whether X sees it). The steps probed that X does not
-  // see go to `unseen`. Pre: X sees no step in [from, limit) before one on the start side.
-  template <class Visible, class Probe>
-  static std::optional<int> first_seen(const Walk& walk, int from, int limit, const Visible& visible, const Probe& probe,
-                                       std::vector<int>& unseen) {
+  // O(log(limit - from)) probes (its side tells whether X sees it). probe(step, ask) gives a step's
+  // side, asking for it (a first contact) only when `ask` and (6) does not give it. The steps probed
+  // that X does not see go to `unseen`.
+  template <class Probe>
+  static int first_seen(const Walk& walk, int from, int limit, const Probe& probe, std::vector<int>& unseen) {
     int a = from, b = limit;
     for (int k = 0; k < kPlainSteps; ++k) {
       const int step = walk.first_from(a);
       if (step >= b) return b;
-      if (visible(step)) return step;
+      const Side side = probe(step, false);
+      if (side == Side::kSeen) return step;
       unseen.push_back(step);
+      if (side == Side::kFarSide) return limit;
       a = step + 1;
     }
     int found = limit;
     const auto look = [&](int step) {
-      const Side side = probe(step);
-      if (side == Side::kUnknown) return false;
+      const Side side = probe(step, true);
       if (side != Side::kSeen) unseen.push_back(step);
       if (side == Side::kStartSide) {
         a = step + 1;
@@ -777,7 +740,6 @@ class ProgramCubic final : public Program {
         b = step;
         found = side == Side::kSeen ? step : limit;
       }
-      return true;
     };
     for (int gap = 1; a < b; gap *= 2) {
       const int at = std::min(b, a + gap - 1), step = walk.first_from(at);
@@ -785,13 +747,13 @@ class ProgramCubic final : public Program {
         b = at;
         break;
       }
-      if (!look(step)) return std::nullopt;
+      look(step);
       if (b == step) break;
     }
     while (a < b) {
       const int mid = a + (b - a) / 2, step = walk.first_from(mid);
       if (step >= b) b = mid;
-      else if (!look(step)) return std::nullopt;
+      else look(step);
     }
     return found;
   }
@@ -799,39 +761,39 @@ class ProgramCubic final : public Program {
   // What X sees moves away from the walk's start along the pass: the search starts after the steps no
   // later X sees, and records what (6) allows of the steps X did not see.
   template <class Visible, class SideUnseen>
-  static std::optional<int> search_apart_moving_away(const Walk& walk, int end, Memory& memory, const Visible& visible,
-                                                     const SideUnseen& side_unseen, std::vector<int>& unseen) {
+  static int search_apart_moving_away(const Walk& walk, int end, Memory& memory, const Visible& visible,
+                                      const SideUnseen& side_unseen, std::vector<int>& unseen) {
     // A step up to the furthest seen by an earlier X, not seen by X, is on the start side (6).
-    const auto probe = [&](int step) {
+    const auto probe = [&](int step, bool ask) {
       if (visible(step)) return Side::kSeen;
-      return step <= memory.reach ? Side::kStartSide : side_unseen(step);
+      if (step <= memory.reach) return Side::kStartSide;
+      return ask ? side_unseen(step) : Side::kUnseen;
     };
     unseen.clear();
-    const auto found = first_seen(walk, memory.blocked_to + 1, end, visible, probe, unseen);
-    if (!found) return std::nullopt;
-    if (*found < end) memory.reach = std::max(memory.reach, *found);
+    const int found = first_seen(walk, memory.blocked_to + 1, end, probe, unseen);
+    if (found < end) memory.reach = std::max(memory.reach, found);
     for (const int step : unseen)
       if (step <= memory.reach) memory.blocked_to = std::max(memory.blocked_to, step);
-    return *found < end ? *found : -1;
+    return found < end ? found : -1;
   }
 
   // ... and back towards it: the search stops before the steps no later X sees.
   template <class Visible, class SideUnseen>
-  static std::optional<int> search_apart_moving_back(const Walk& walk, int end, Memory& memory, const Visible& visible,
-                                                     const SideUnseen& side_unseen, std::vector<int>& unseen) {
+  static int search_apart_moving_back(const Walk& walk, int end, Memory& memory, const Visible& visible,
+                                      const SideUnseen& side_unseen, std::vector<int>& unseen) {
     // A step at or after the nearest seen by an earlier X, not seen by X, is on the far side (6).
-    const auto probe = [&](int step) {
+    const auto probe = [&](int step, bool ask) {
       if (visible(step)) return Side::kSeen;
-      return step >= memory.seen_nearest ? Side::kFarSide : side_unseen(step);
+      if (step >= memory.seen_nearest) return Side::kFarSide;
+      return ask ? side_unseen(step) : Side::kUnseen;
     };
     unseen.clear();
     const int limit = std::min(end, memory.blocked_from);
-    const auto found = first_seen(walk, 0, limit, visible, probe, unseen);
-    if (!found) return std::nullopt;
-    if (*found < limit) memory.seen_nearest = std::min(memory.seen_nearest, *found);
+    const int found = first_seen(walk, 0, limit, probe, unseen);
+    if (found < limit) memory.seen_nearest = std::min(memory.seen_nearest, found);
     for (const int step : unseen)
       if (step >= memory.seen_nearest) memory.blocked_from = std::min(memory.blocked_from, step);
-    return *found < limit ? *found : -1;
+    return found < limit ? found : -1;
   }
 
   void record(Row& row, int q, int Q, int G, int M, int H) {
@@ -847,7 +809,7 @@ class ProgramCubic final : public Program {
   std::vector<Row> rows_;  // at(g, h): the row of interval (g, h), empty when it has no witness
   Walks walks_;
   std::vector<int> unseen_;  // the steps a search of rays apart probed and X did not see
-  std::int64_t p4_sides_ = 0, p4_sides_unknown_ = 0;
+  std::int64_t p4_sides_ = 0;
   std::int64_t table_entries_ = 0, table_witnesses_ = 0, scan_steps_ = 0, p4_tests_ = 0, lookup_steps_ = 0, chosen_ = 0,
                chosen_from_w_ = 0;
 };
