@@ -99,11 +99,12 @@
 //         the cases differ in what the walks cost, (a) bounding it.)
 // (7) For rays apart, where XY first meets the boundary tells on which side of what X sees Y lies (not
 //     in the OCR text; proven here). G and H are chords of P, disjoint but perhaps for a shared end (a
-//     ray stopping at the other's notch, or both at one boundary point); two such chords do not
-//     interleave on the boundary (ArcsBetween). Between them lies the part P' bounded by G, an arc A
-//     of the boundary from an end of G to an end a of H, H, and an arc B from H's other end b back to
-//     G (a single point where G and H share an end); beyond G lies the part bounded by G and the
-//     boundary between G's ends. Take X on G and Y on H (open), XY meeting the boundary first at c,
+//     ray stopping at the other's notch, or both at one boundary point), and not on one line (a query's
+//     X lies strictly right of H's line, (4), so a scan of collinear rays has no query); two such
+//     chords do not interleave on the boundary (ArcsBetween). Between them lies the part P' bounded
+//     by G, an arc A of the boundary from an end of G to an end a of H, H, and an arc B from H's other
+//     end b back to G (a single point where G and H share an end); beyond G lies the part bounded by
+//     G and the boundary between G's ends. Take X on G and Y on H (open), XY meeting the boundary first at c,
 //     going from X (first_contact). By (4), Y lies strictly right of G's line and X of H's, so XY
 //     meets G's line only at X and H's only at Y, and c is no end of G or H.
 //     (i) c on A: X sees no point Y' of H between Y and a. Else the chord XY' cuts P' into P_a (XY',
@@ -152,8 +153,8 @@
 //   random n = 2000 (seed 1) a test costs 57, 45, 43 and 36 steps at r = 25, 50, 100 and 200
 //   ("segment_search_steps" per "x4_p4_tests").
 // - The walks of (6) reach O(1) amortized tests per query for crossing rays (a pass tests O(r) Y
-//   besides at most two per query), the searches of (7) O(log r) per query for rays apart, each
-//   failing test followed by a first_contact. The thesis's scans presumably test O(1) per query; how
+//   besides at most two per query), the searches of (7) O(log r) per query for rays apart, a failing
+//   test followed by a first_contact where (6) does not place its step. The thesis's scans presumably test O(1) per query; how
 //   is in the lost text. Measured, seed 1, "x4_p4_tests": walks each alone (Walks::kEachAlone) / the
 //   walks of (6) alone, before (7) / with (7), and "x4_p4_sides": notch-heavy n = 50, 100, 200, 400:
 //   3,870 / 3,517 / 3,515 (19); 49,877 / 35,867 / 35,362 (586); 557,553 / 316,259 / 306,687 (6,152);

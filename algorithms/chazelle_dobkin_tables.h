@@ -508,7 +508,7 @@ class ProgramCubic final : public Program {
     if (rays_.loose(G, H)) {
       lists.crossing = true, lists.crossing_on_g = rays_.key(G, H), lists.crossing_on_h = rays_.key(H, G);
     } else {
-      lists.arcs.emplace(rays_, G, H);
+      lists.arcs.emplace(rays_, G, H);  // not collinear: the queries' X lie strictly right of H's line
     }
     sweep_forward(queries, lists, along_g, row);
     sweep_backward(queries, lists, along_g, row);
