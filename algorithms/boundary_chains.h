@@ -136,9 +136,10 @@ class SegmentSearch {
     QPoint point;
   };
   // The first point of the boundary that the closed segment st meets, going from s, or nothing when it
-  // meets none. The same search as meets_boundary, which it runs to the end instead of stopping at the
-  // first edge met: every edge it would test is tested, and of the points met the one nearest to s is
-  // kept (a stretch of edges on the segment's line gives its end nearest to s). Pre: s != t.
+  // meets none. The same search as meets_boundary, which it carries on past the edges met instead of
+  // stopping at the first: each point met nearer to s than those before is kept, and the segment is
+  // cut short at it for the rest of the search (a stretch of edges on the segment's line gives its end
+  // nearest to s). Pre: s != t.
   std::optional<Contact> first_contact(const QPoint& s, const QPoint& t);
 
   std::int64_t steps() const { return steps_; }
