@@ -184,6 +184,7 @@
 // unary conditions), "x4_table_witnesses" (entries with a pattern, also added to "x4_found"),
 // "x4_scan_steps" (list positions visited while filling, walks included), "x4_p4_tests" (segments XY
 // tested), "x4_p4_sides" (first contacts asked for by the searches of rays apart, (7)),
+// "x4_scans_sharing_an_end" (scans, with queries and inserts, of rays apart that share an end, (7)),
 // "x4_lookup_steps" (STEP 3's lookups), "x4_chosen" (intervals whose S was reached by an X4-pattern)
 // and "x4_chosen_from_w" (those from W's pairing).
 #include "algorithms/chazelle_dobkin_tables.h"

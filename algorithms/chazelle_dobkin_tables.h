@@ -210,6 +210,14 @@ class ArcsBetween {
     throw std::logic_error("chazelle-dobkin: two rays apart interleave on the boundary");
   }
 
+  // Whether an end of G is an end of H (neither comes before the other on the boundary).
+  bool share_an_end() const {
+    for (int a : {0, 1})
+      for (int b : {2, 3})
+        if (!rays_.before(*ends_[a], *ends_[b]) && !rays_.before(*ends_[b], *ends_[a])) return true;
+    return false;
+  }
+
   // For Y on H not seen from X on G, with c the first point of the boundary on XY from X: an end of H
   // (0 its notch, 1 its far end) such that X sees no point of H between Y and it (header, (7)). When c
   // lies on an arc of P', the end that arc reaches; when it lies on the boundary beyond G, XY left X
@@ -260,6 +268,7 @@ class ProgramCubic final : public Program {
     counters["x4_scan_steps"] = scan_steps_;
     counters["x4_p4_tests"] = p4_tests_;
     counters["x4_p4_sides"] = p4_sides_;
+    counters["x4_scans_sharing_an_end"] = scans_sharing_an_end_;
     counters["x4_lookup_steps"] = lookup_steps_;
     counters["x4_chosen"] = chosen_;
     counters["x4_chosen_from_w"] = chosen_from_w_;
@@ -509,6 +518,7 @@ class ProgramCubic final : public Program {
       lists.crossing = true, lists.crossing_on_g = rays_.key(G, H), lists.crossing_on_h = rays_.key(H, G);
     } else {
       lists.arcs.emplace(rays_, G, H);  // not collinear: the queries' X lie strictly right of H's line
+      scans_sharing_an_end_ += lists.arcs->share_an_end();
     }
     sweep_forward(queries, lists, along_g, row);
     sweep_backward(queries, lists, along_g, row);
@@ -809,7 +819,7 @@ class ProgramCubic final : public Program {
   std::vector<Row> rows_;  // at(g, h): the row of interval (g, h), empty when it has no witness
   Walks walks_;
   std::vector<int> unseen_;  // the steps a search of rays apart probed and X did not see
-  std::int64_t p4_sides_ = 0;
+  std::int64_t p4_sides_ = 0, scans_sharing_an_end_ = 0;
   std::int64_t table_entries_ = 0, table_witnesses_ = 0, scan_steps_ = 0, p4_tests_ = 0, lookup_steps_ = 0, chosen_ = 0,
                chosen_from_w_ = 0;
 };

@@ -777,7 +777,7 @@ TEST(ChazelleDobkinTables, CarriedOverWalksFindTheWitnessesOfWalksAlone) {
   // Long passes of rays apart, where the searches of (7) probe past the first steps.
   const Polygon notch_heavy = Polygon::make(generate("notch-heavy", 80, std::nullopt, 1));
   for (std::size_t by : {0, 27}) polygons.emplace_back(rotated(notch_heavy, by), "notch-heavy n=80 rotated " + std::to_string(by));
-  std::int64_t carried_tests = 0, alone_tests = 0, witnesses = 0, sides = 0;
+  std::int64_t carried_tests = 0, alone_tests = 0, witnesses = 0, sides = 0, shared_ends = 0;
   for (const auto& [p, where] : polygons) {
     cd::ProgramCubic carried(p), alone(p, cd::ProgramCubic::Walks::kEachAlone);
     Counters carried_counters, alone_counters;
@@ -798,11 +798,15 @@ TEST(ChazelleDobkinTables, CarriedOverWalksFindTheWitnessesOfWalksAlone) {
     carried_tests += carried_counters["x4_p4_tests"];
     alone_tests += alone_counters["x4_p4_tests"];
     sides += carried_counters["x4_p4_sides"];
+    shared_ends += carried_counters["x4_scans_sharing_an_end"];
   }
   EXPECT_GT(witnesses, 5000);
   EXPECT_LT(carried_tests, alone_tests);
   // The searches of rays apart asked for sides (header, (7)).
   EXPECT_GT(sides, 200);
+  // Scans of rays apart that share an end (a ray stopping at the other's notch, or both at one point),
+  // whose ends ArcsBetween orders so that the two chords do not interleave.
+  EXPECT_GT(shared_ends, 0);
 }
 
 // The list steps of the scans (walks to P4 tests aside) and STEP 3's lookups grow as r^3 at most: the
