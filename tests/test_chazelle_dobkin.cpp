@@ -777,7 +777,7 @@ TEST(ChazelleDobkinTables, CarriedOverWalksFindTheWitnessesOfWalksAlone) {
   // Long passes of rays apart, where the searches of (7) probe past the first steps.
   const Polygon notch_heavy = Polygon::make(generate("notch-heavy", 80, std::nullopt, 1));
   for (std::size_t by : {0, 27}) polygons.emplace_back(rotated(notch_heavy, by), "notch-heavy n=80 rotated " + std::to_string(by));
-  // Polygons whose scans of rays apart share ends most often among some 1,000 small ones generated
+  // Polygons whose scans of rays apart share ends most often among some 850 small ones generated
   // (a ray stopping at another's notch, or two at one point): ArcsBetween's tie-break.
   for (const Sample& s : {Sample{"random", 40, 20, 12}, Sample{"notch-heavy", 28, 24, 3}, Sample{"random", 24, 12, 8}}) {
     const Polygon base = make(s);
