@@ -131,18 +131,7 @@ SegmentSearch::SegmentSearch(const Polygon& p, const std::vector<QPoint>& exact)
   for (std::size_t i = leaves_ - 1; i >= 1; --i) boxes_[i] = boxes_[2 * i] + boxes_[2 * i + 1];
 }
 
-bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId skip) {
-  finding_nearest_ = false;
-  return search(s, t, skip);
-}
-
-std::optional<SegmentSearch::Contact> SegmentSearch::first_contact(const QPoint& s, const QPoint& t) {
-  finding_nearest_ = true;
-  nearest_.reset();
-  search(s, t, kNoVertex);
-  finding_nearest_ = false;
-  return std::move(nearest_);
-}
+bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId skip) { return search(s, t, skip); }
 
 // Descends the hierarchy from its root into the nodes whose box can meet the segment.
 bool SegmentSearch::search(const QPoint& s, const QPoint& t, VertexId skip) {
@@ -298,41 +287,10 @@ int SegmentSearch::dot_sign_with_u(std::size_t from, std::size_t to) {
 }
 
 // Whether chain vertex `from` (from == to), the chain's edge from `from` to `to`, or its stretch of
-// edges from `from` to `to` along the segment's line, meets the segment. When finding the nearest
-// contact, the point met nearest to s is kept instead and the search goes on.
+// edges from `from` to `to` along the segment's line, meets the segment.
 bool SegmentSearch::meets(std::size_t from, std::size_t to) {
-  if (from == to) {
-    if (!st_.has_on(x(from))) return false;
-    if (!finding_nearest_) return true;
-    keep_nearer(x(from), from, to);
-    return false;
-  }
-  const Segment piece(x(from), x(to));
-  if (!finding_nearest_) return CGAL::do_intersect(st_, piece);
-  const auto met = CGAL::intersection(st_, piece);
-  if (!met) return false;
-  if (const QPoint* point = boost::get<QPoint>(&*met)) {
-    keep_nearer(*point, from, to);
-  } else {
-    const Segment& overlap = boost::get<Segment>(*met);
-    const bool source_first = (overlap.source() - *s_) * u_ <= (overlap.target() - *s_) * u_;
-    keep_nearer(source_first ? overlap.source() : overlap.target(), from, to);
-  }
-  return false;
-}
-
-// Keeps `point`, met on the chain's vertices from..to, as the nearest contact, with the polygon vertex
-// or edge it lies at (a point equal to a vertex is at it). The search goes on with the segment cut
-// short at it: only a nearer point can matter, and the smaller box passes over more of the hierarchy.
-void SegmentSearch::keep_nearer(const QPoint& point, std::size_t from, std::size_t to) {
-  if (nearest_ && (nearest_->point - *s_) * u_ <= (point - *s_) * u_) return;
-  std::size_t j = from;
-  while (j < to && point != x(j) && !Segment(x(j), x(j + 1)).has_on(point)) ++j;
-  if (j < to && point == x(j + 1)) ++j;
-  nearest_ = Contact{chain_vertex(p_, *chain_, j), point == x(j), point};
-  t_ = &nearest_->point;
-  st_ = Segment(*s_, *t_);
-  around_ = box_of(*s_, *t_);
+  if (from == to) return st_.has_on(x(from));
+  return CGAL::do_intersect(st_, Segment(x(from), x(to)));
 }
 
 // The box of segment st, from intervals around its ends' coordinates.

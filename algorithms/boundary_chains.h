@@ -19,7 +19,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 namespace pd::boundary {
@@ -135,12 +134,6 @@ class SegmentSearch {
     bool at_vertex;
     QPoint point;
   };
-  // The first point of the boundary that the closed segment st meets, going from s, or nothing when it
-  // meets none. The same search as meets_boundary, which it carries on past the edges met instead of
-  // stopping at the first: each point met nearer to s than those before is kept, and the segment is
-  // cut short at it for the rest of the search (a stretch of edges on the segment's line gives its end
-  // nearest to s). Pre: s != t.
-  std::optional<Contact> first_contact(const QPoint& s, const QPoint& t);
 
   std::int64_t steps() const { return steps_; }
 
@@ -160,7 +153,6 @@ class SegmentSearch {
   bool box_meets(const CGAL::Bbox_2& box) const;
   static CGAL::Bbox_2 box_of(const QPoint& s, const QPoint& t);
   bool search(const QPoint& s, const QPoint& t, VertexId skip);
-  void keep_nearer(const QPoint& point, std::size_t from, std::size_t to);
   Interval line_side(double x, double y) const;
 
   const Polygon& p_;
@@ -179,9 +171,6 @@ class SegmentSearch {
   CGAL::Bbox_2 around_;
   ExactKernel::Vector_2 u_;
   Interval sx_, sy_, ux_, uy_;
-  // first_contact's search: it records every point met in `nearest_` instead of stopping.
-  bool finding_nearest_ = false;
-  std::optional<Contact> nearest_;
   std::int64_t steps_ = 0;
 };
 

@@ -58,77 +58,69 @@
 //     answered before inserts of its own rank (strictness). The set is a bitset of the places along H
 //     under summary words (PlaceSet in chazelle_dobkin_tables.h: at most 3 word operations per insert
 //     or nearest member for 32767 notches), and the orders along G and H are counting sorts of ranks,
-//     so a scan is O(r) besides its walks. The P2-feasible Y of a query are then exactly the set; P1
-//     makes them a range from one end of it, and the query's witness is the first Y of that range, in
-//     order from that end, that passes P4: the walk. Soundness: every witness satisfies all of (4)
-//     (P4 tested, or, where a walk records a Y without testing it, proven by (6)), which chosen()
-//     checks again in full before the layout (a failure throws: it would be a bug).
-//     Completeness over loose pairs: by (4), every loose pair with the four conditions is reached by
-//     the walk of its query before the walk stops, unless the walk stopped at an earlier witness.
-// (6) The walks of a pass share what they learn (not in the OCR text, whose "2-way scans" stop before
-//     saying how; proven here). G and H are the open clipped rays, in int P; X on G, Y on H; along a
-//     pass X moves one way along G. A walk may skip a Y only where (a) or (b) proves that X cannot see
-//     it, so it stops at the same Y as a walk testing every Y in turn (the test
-//     CarriedOverWalksFindTheWitnessesOfWalksAlone holds every row of both to each other).
-//     Two facts first. For one X the Y it sees form an interval of H (if X sees Y1 and Y2, the triangle
-//     X Y1 Y2 has its boundary in int P, so all of it lies there), and for one Y the X that see it an
-//     interval of G; they cover X or Y at equal ranks (several rays through one point).
+//     so a scan is O(r) besides finding what its queries see. The P2-feasible Y of a query are then
+//     exactly the set; P1 makes them a range from one end of it (the walk's steps), and the query's
+//     witness is the first Y of that range, in order from that end, that passes P4, XY in P. The Y
+//     that X sees are a range of places (6), found with geodesics (7), so the witness is one nearest
+//     member of the set. Soundness: every witness satisfies all of (4), which chosen() checks again
+//     in full before the layout (a failure throws: it would be a bug). Completeness over loose pairs:
+//     by (4), every loose pair with the four conditions lies in its query's range, so the query finds
+//     it unless it found an earlier witness.
+// (6) What X sees of H (not in the OCR text, whose "2-way scans" stop before saying how; proven here).
+//     G and H are the open clipped rays, in int P; X on G, Y on H. For one X the Y it sees form an
+//     interval of H (if X sees Y1 and Y2, the triangle X Y1 Y2 has its boundary in int P, so all of it
+//     lies there): its places are a range [lo, hi) of by_at, equal ranks (several rays through one
+//     point) in or out together. M: the ends move one way.
 //     (a) G and H cross at c. For X, Y other than c, XY lies in int P iff the closed triangle X c Y
 //         does: Xc and cY lie in G and H, so if XY lies in int P the triangle's boundary does, and so
 //         does the triangle, P being simply connected. The triangle only grows as X or Y moves away
-//         from c along its ray. So on each side of c the Y that X sees are those between c and a
-//         threshold: beyond c only the first Y of a walk need be tested, and on the walk's own side
-//         (c included) the seen Y are the last ones. While X moves towards c, every Y an earlier X saw
-//         stays seen: the walk tests the Y before the first such Y of the walk, one by one back
-//         towards its start, while the tests pass.
-//         While X moves away from c, a Y an earlier X did not see stays unseen: the walk starts after
-//         it. (By (4) no X or Y is at c and all Y of a scan lie on one side of c; the code does not
-//         need it.)
+//         from c along its ray. By (4) no X or Y is at c, all X of a scan lie on one side of c and all
+//         Y on one side, so the Y that X sees are those between c and a threshold, which moves away
+//         from c as X moves towards it.
 //     (b) G and H apart. Y lies strictly right of the line of G and X strictly right of that of H (4).
 //         Let s and t be the parameters along G and H from their notches. If X1 sees Y1 and X2 sees
 //         Y2 with s1 < s2 and t1 > t2, the closed path X1 X2 Y2 Y1 turns clockwise, strictly, at each
 //         of its four corners (at X1 and X2 since Y1 and Y2 lie right of G's line, at Y2 and Y1 since
 //         X2 and X1 lie right of H's), so it is a convex quadrilateral (its four turns, each strictly
-//         between 0 and 180 degrees, add up to a multiple of 360, so to 360). Its sides lie in int P, so all of it does: every X between X1 and X2
-//         sees every Y between Y2 and Y1. So the lowest and the highest Y that X sees along H never go
-//         down as X moves up along G, and, for a walk whose seen Y move away from its start along the
-//         pass: if X does not see Y but X or an earlier X saw a Y' at or after Y, no later X sees Y or
-//         a Y before it (the walk starts after the last such Y). For a walk whose seen Y move back
-//         towards its start: if X does not see Y but an earlier X saw a Y' at or before Y, neither X
-//         nor a later X sees Y or a Y after it (the walk stops). (The same holds for crossing rays;
-//         the cases differ in what the walks cost, (a) bounding it.)
-// (7) For rays apart, where XY first meets the boundary tells on which side of what X sees Y lies (not
-//     in the OCR text; proven here). G and H are chords of P, disjoint but perhaps for a shared end (a
-//     ray stopping at the other's notch, or both at one boundary point), and not on one line (a query's
-//     X lies strictly right of H's line, (4), so a scan of collinear rays has no query); two such
-//     chords do not interleave on the boundary (ArcsBetween). Between them lies the part P' bounded
-//     by G, an arc A of the boundary from an end of G to an end a of H, H, and an arc B from H's other
-//     end b back to G (a single point where G and H share an end); beyond G lies the part bounded by
-//     G and the boundary between G's ends. Take X on G and Y on H (open), XY meeting the boundary first at c,
-//     going from X (first_contact). By (4), Y lies strictly right of G's line and X of H's, so XY
-//     meets G's line only at X and H's only at Y, and c is no end of G or H.
-//     (i) c on A: X sees no point Y' of H between Y and a. Else the chord XY' cuts P' into P_a (XY',
-//         H from Y' to a, A, part of G) and P_b (XY', H from Y' to b, Y on it, B, the rest of G). The
-//         triangle X Y' Y lies on one side of the line XY', near Y' the side of P_b (XY' reaches Y'
-//         from P', and the side Y'Y is H towards b), so near X too, a chord having its part on one side
-//         all along: XY leaves X into P_b. Until c it lies in int P' and cannot cross XY' (they share
-//         X only), so it stays in P_b, whose boundary does not meet A: a contradiction. Likewise B, b.
-//     (ii) c beyond G: XY left X away from P', and so does XY'' for every Y'' on H on Y's side of G's
-//         line; such an XY'' cannot cross G, so it meets the boundary beyond G before reaching Y''.
-//         Those Y'' are the points of H between Y and its end on Y's side of G's line.
-//     (iii) c is on A, on B or beyond G: XY leaving X into P' stays in int P' until c, and P''s
-//         boundary holds no point of the boundary beyond H.
-//     So every unseen Y has an end e(Y) of H with no seen point between them. What X sees is an
-//     interval of H (6), so along a walk the unseen steps before the seen ones have e at the walk's
-//     start (a seen step lies between them and the far end) and those after at the far end: the
-//     steps run start side*, seen*, far side*. If X sees no point of H no step is seen, whatever
-//     the sides. The first seen inserted step, the walk's witness, is therefore the first inserted
-//     step not on the start side when that one is seen, and there is none otherwise: the searches
-//     find it by galloping and bisecting, O(log r) tests, each failing one followed by a
-//     first_contact. Most walks end at once: the first two steps are tested in turn without asking
-//     their sides (kPlainSteps), and a step not seen that (6) already places (at or before the
-//     furthest step an earlier X saw, or at or after the nearest) needs no first_contact. What the
-//     searches record for later X is what (6) allows for the steps they tested.
+//         between 0 and 180 degrees, add up to a multiple of 360, so to 360). Its sides lie in int P,
+//         so all of it does: every X between X1 and X2 sees every Y between Y2 and Y1. So the lowest
+//         and the highest Y that X sees along H never go down as X moves up along G.
+//     R: for rays apart, the X of G that see some point of H+ (the part of H strictly right of G's
+//     line, where every Y lies) form an interval of G. Take X1 < X2 < X3 along G, X1 seeing Y1 and X3
+//     seeing Y3 in H+. If t1 > t3 the quadrilateral X1 X3 Y3 Y1 of (b) lies in int P and X2 sees the
+//     points of Y3 Y1; if t1 = t3, the triangle X1 X3 Y1 does, and X2 sees Y1; if t1 < t3, the
+//     segments X1 Y1 and X3 Y3 cross at a point p (X1 Y1 separates X3 from Y3 in the convex hull of
+//     the four points, the turns being as in (b)), the triangles X1 X3 p and p Y1 Y3 lie in int P
+//     (their boundaries do), and the ray from X2 through p meets Y1 Y3 at a point X2 sees. So along a
+//     scan's queries in order along G, lo and hi move one way, but for the queries before and after
+//     that interval, which see no Y.
+// (7) How X sees H, from geodesics (not in the OCR text; the facts are standard: Lee and Preparata,
+//     Networks 14, 1984; Guibas, Hershberger, Leven, Sharir and Tarjan, Algorithmica 2, 1987, where a
+//     point's visibility polygon is read off its tree of shortest paths; algorithms/geodesics.h).
+//     F1: the geodesic (shortest path in P) between two points is unique and bends only at notches; a
+//     geodesic that passes straight through a vertex lists it, so its first point after a start in
+//     int P is the first point of the boundary it meets. F3: for a segment K in P and a point e, the
+//     geodesics from K's two ends to e meet at an apex and form a funnel; the geodesic from X on K to
+//     e leaves X towards the funnel vertex f_e(X) from which it goes straight to X, and f_e(X) moves
+//     monotonically over the funnel as X moves along K (geodesics to one point do not cross). F4: for
+//     X off the line of H, X sees exactly the points of the open H strictly inside the angle between
+//     the rays from X through f1 = f_{z_h}(X) and f2 = f_{w_H}(X), the first points of the boundary on
+//     the geodesics from X to H's notch and to its far end; the angle is below 180 degrees, and empty
+//     (X, f1 and f2 on one line) when X sees no point of H. ("Strictly": a segment XY that touches
+//     the boundary touches a vertex, which then lies on one of the two rays.)
+//     So a scan takes the two funnels of G's ends to H's ends from the trees of geodesics rooted at
+//     H's ends (each built the first time a scan needs it, O(n log n), at most 3r of them), and each
+//     query its f1 and f2 by a search in each funnel and its range [lo, hi) by two searches along H.
+//     A place is tested by three orientations, which tell where its Y lies: before the ray through f1
+//     (towards H's notch), after the ray through f2 (towards the far end), or seen. A query's range
+//     is computed once, the first time a pass asks for it, and each search gallops from where the
+//     last one ended: by F3 and M the answers move one way along the queries a pass asks for, and by
+//     R the queries off the run sit at its two ends (a pass that follows one in the other direction,
+//     or a query off the run, costs one jump of O(log r)). A scan therefore costs O(queries + inserts
+//     + funnel vertices) orientations, O(r) when no vertex of 180 degrees lies on the geodesics. Which
+//     places a query sees rests on F4 alone; the cost on F3, M and R. The test
+//     GeodesicsFindTheWitnessesOfWalksAlone holds every row to walks that test each Y in turn with a
+//     segment search, and Geodesics.ShortestPathsOfTheBruteForce the trees to a brute force.
 // Proven: every witness is an X4-pattern, so the output is always a valid decomposition, with at most
 // the optimum's patterns. Assumed, not proven (call it A18'): whenever a tight X4-pattern in
 // chazelle-dobkin-n5's sense (tips of Q, Theorem 15) exists, some loose one on tight notches exists too
@@ -147,46 +139,43 @@
 // with z_0. Such patterns never changed a count (STEP 2 reached the same); the test
 // EveryTipX4HasALooseX4OnTheSameNotches checks the strong form on samples.
 // Deviations.
-// - P4 is tested as a segment search on the boundary's convex chains (algorithms/boundary_chains.h:
-//   a hierarchy of their bounding boxes, then binary searches on the chains near XY), O(r log(n/r))
-//   per test in the worst case, rather than in O(1): the thesis's text stops before saying how. On
-//   random n = 2000 (seed 1) a test costs 57, 45, 43 and 36 steps at r = 25, 50, 100 and 200
-//   ("segment_search_steps" per "x4_p4_tests").
-// - The walks of (6) reach O(1) amortized tests per query for crossing rays (a pass tests O(r) Y
-//   besides at most two per query), the searches of (7) O(log r) per query for rays apart, a failing
-//   test followed by a first_contact where (6) does not place its step. The thesis's scans presumably test O(1) per query; how
-//   is in the lost text. Measured, seed 1, "x4_p4_tests": walks each alone (Walks::kEachAlone) / the
-//   walks of (6) alone, before (7) / with (7), and "x4_p4_sides": notch-heavy n = 50, 100, 200, 400:
-//   3,870 / 3,517 / 3,515 (19); 49,877 / 35,867 / 35,362 (586); 557,553 / 316,259 / 306,687 (6,152);
-//   7,514,640 / 2,853,715 / 2,627,417 (78,028), for 3,262, 31,442, 270,966 and 2,279,469 witnesses;
-//   random n = 2000, r = 100 and 200: 9,050 / 8,160 / 8,084 (290) and 82,454 / 69,449 / 58,858
-//   (5,469), for 4,467 and 29,758 witnesses. The first contacts cost about what the tests saved
-//   ("segment_search_steps" at notch-heavy n = 400 118,120,108 before (7), 117,362,561 with it;
-//   random r = 200 2,442,827 and 2,396,616). User time, median of 5 runs alternating with the
-//   build before (7): random r = 200 4.01 s then 4.14 s, notch-heavy n = 200 3.19 s then 3.38 s;
-//   in a later, noisier set 4.05 s then 4.21 s and 4.11 s then 3.98 s. (7) bounds the worst case;
-//   it does not speed up these.
+// - The thesis's text stops before saying how its scans test P4; its "O(N) per interval after O(N^3)
+//   preprocessing" suggests a table of what each loose point sees of each ray. The funnels of (7)
+//   compute those entries as the scans need them and store none; the geodesic trees cost O(n r log n)
+//   where the thesis's preprocessing is O(n + r^2 log n). chosen()'s full check still tests P4 as a
+//   segment search on the boundary's convex chains (algorithms/boundary_chains.h), O(r log(n/r)) per
+//   test, for O(r^2) chosen patterns. Measured (seed 1; "x4_p4_tests" / "x4_funnel_steps", user
+//   seconds; in brackets the walks with segment searches that (7) replaced: their tests, seconds):
+//   notch-heavy n = 50, 100, 200, 400: 8,136 / 11,359, 0.08 s; 77,542 / 111,781, 0.25 s; 638,076 /
+//   934,491, 1.30 s; 5,216,414 / 7,778,006, 8.47 s (3,515, 0.06 s; 35,362, 0.49 s; 306,687, 4.00 s;
+//   2,627,417, 33.0 s): each count grows by 8.2-9.6 when r doubles. Random n = 2000, r = 100 and
+//   200: 13,098 / 30,334, 0.60 s and 81,892 / 184,936, 4.47 s (8,084 and 58,858 tests; 4.1-4.7 s at
+//   r = 200, where STEP 2's X3 tests take most of the time).
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
 //   superranges; see chazelle_dobkin_patterns.h).
 //
-// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists; STEPs 2 and 4
-// O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
-// O(r^3) lookups; the scans O(r^3) list steps (a PlaceSet operation is O(1) for r < 32768) plus the
-// P4 tests and first contacts, O(r log(n/r)) each: O(r) per pass and at most two per query for
-// crossing rays, O(log r) per query for rays apart (7), so O(r^3 log r) of them over the O(r^3)
-// queries (O(r) per interval). Worst case O(n log n + n r + r^4 log r log(n/r)). Space
-// O(n + r^3) (a row per interval with a witness) plus O(r^2) rationals for the lists. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
-// convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
+// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists, O(n log n) for each of
+// at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
+// O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for r < 32768), O(r^3)
+// over the O(r^2) intervals, with as many more steps as the geodesics pass vertices of 180 degrees;
+// chosen()'s checks O(r^3 log(n/r)). Worst case O(n r log n + r^3 log(n/r)). Space O(n r) for the
+// trees, O(r^3) for the rows (a row per interval with a witness) and O(r^2) rationals for the lists
+// and loose points. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an
+// optimal convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points
+// exact.
 //
 // Counters, besides the program's and the patterns': "x4_loose_points" (pairs of rays meeting inside
 // both), "x4_rays_at_vertex" (loose rays clipped at a vertex), "x4_table_entries" (queries past their
 // unary conditions), "x4_table_witnesses" (entries with a pattern, also added to "x4_found"),
-// "x4_scan_steps" (list positions visited while filling, walks included), "x4_p4_tests" (segments XY
-// tested), "x4_p4_sides" (first contacts asked for by the searches of rays apart, (7)),
-// "x4_scans_sharing_an_end" (scans, with queries and inserts, of rays apart that share an end, (7)),
-// "x4_lookup_steps" (STEP 3's lookups), "x4_chosen" (intervals whose S was reached by an X4-pattern)
-// and "x4_chosen_from_w" (those from W's pairing).
+// "x4_scan_steps" (list positions visited while filling, places tested included), "x4_p4_tests"
+// (places tested against what a query's X sees, (7)), "x4_funnel_points" (vertices of the scans'
+// funnels), "x4_funnel_steps" (orientations of the queries' searches in the funnels),
+// "x4_scans_sharing_an_end" (scans, with queries and inserts, of rays apart that share an end),
+// "x4_lookup_steps" (STEP 3's lookups), "x4_chosen" (intervals whose S was reached by an X4-pattern),
+// "x4_chosen_from_w" (those from W's pairing), and the trees' "geodesic_trees", "geodesic_triangles"
+// (triangles entered by their walks) and "geodesic_tangent_steps" (orientations of their funnel
+// searches).
 #include "algorithms/chazelle_dobkin_tables.h"
 
 namespace pd {
@@ -201,7 +190,7 @@ Decomposition chazelle_dobkin(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*log(n)+n*r+r^4*log(r)*log(n/r)", "== OPT",
+REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*r*log(n)+r^3*log(n/r)", "== OPT",
                              "Chazelle thesis (000) Sec. 2.4, Def. 2.4, Thm 18, Lemma 9", 20000, chazelle_dobkin});
 
 }  // namespace pd

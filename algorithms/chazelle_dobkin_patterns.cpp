@@ -145,7 +145,7 @@ std::vector<QPoint> exact_vertices(const Polygon& p) {
 
 }  // namespace
 
-Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segments_(p, exact_) {
+Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segments_(p, exact_), visibility_(p) {
   for (std::size_t v = 0; v < p.size(); ++v)
     if (p.is_reflex(v)) notches_.push_back(static_cast<VertexId>(v));
   const std::size_t r = notches_.size();
@@ -155,13 +155,12 @@ Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segment
   tip_.assign(r * r, std::nullopt);
   compute_bare_cones();
   if (r == 0) return;
-  const VisibilityGraph visibility(p);
   std::vector<std::uint32_t> visible, seen;
   std::int64_t triangles = 0;
   for (std::size_t i = 0; i < r; ++i) {
     visible.clear();
     seen.clear();
-    visibility.visible_from(notches_[i], visible, triangles, &seen);
+    visibility_.visible_from(notches_[i], visible, triangles, &seen);
     compute_transitions(i, visible, seen);
   }
 }
@@ -361,10 +360,6 @@ bool Patterns::sees(VertexId v, const QPoint& s) const {
 }
 
 bool Patterns::inside(const QPoint& s, const QPoint& t) const { return !segments_.meets_boundary(s, t); }
-
-std::optional<boundary::SegmentSearch::Contact> Patterns::first_contact(const QPoint& s, const QPoint& t) const {
-  return segments_.first_contact(s, t);
-}
 
 void Patterns::report(Counters& counters) const {
   counters["x2_tests"] += x2_tests_;

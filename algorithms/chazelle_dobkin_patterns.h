@@ -78,6 +78,7 @@
 #pragma once
 
 #include "algorithms/boundary_chains.h"
+#include "algorithms/visibility.h"
 #include "core/registry.h"
 
 #include <CGAL/Interval_nt.h>
@@ -174,9 +175,9 @@ class Patterns {
   bool sees(VertexId v, const QPoint& s) const;
   // Whether the closed segment st, between interior points, avoids P's boundary. O(r log(n/r)).
   bool inside(const QPoint& s, const QPoint& t) const;
-  // The first point of P's boundary that the closed segment st meets, going from s, and where it lies
-  // (boundary::SegmentSearch::first_contact), or nothing when st avoids the boundary. O(r log(n/r)).
-  std::optional<boundary::SegmentSearch::Contact> first_contact(const QPoint& s, const QPoint& t) const;
+
+  // P's triangulation, with visibility from its vertices (algorithms/visibility.h).
+  const VisibilityGraph& triangulation() const { return visibility_; }
 
   // Counts "x2_tests", "x2_found", "x3_tests", "x3_found", "x4_tests", "x4_found", "tips" (computed),
   // "tips_found" (that exist), "segment_search_steps" (boxes of the chains' hierarchy visited,
@@ -201,6 +202,7 @@ class Patterns {
   const Polygon& p_;
   std::vector<QPoint> exact_;
   mutable boundary::SegmentSearch segments_;  // P's boundary in convex chains, for sees and inside
+  VisibilityGraph visibility_;                // and its triangulation
   std::vector<VertexId> notches_;
   // Per notch: the bare notch, its joint and its two branches.
   std::vector<AdaptedNotch> bare_;

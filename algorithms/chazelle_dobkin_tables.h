@@ -6,11 +6,11 @@
 #pragma once
 
 #include "algorithms/chazelle_dobkin.h"
+#include "algorithms/geodesics.h"
 #include "algorithms/ray_shooting.h"
 
 #include <algorithm>
 #include <array>
-#include <climits>
 #include <cstdlib>
 #include <cstdint>
 #include <optional>
@@ -36,6 +36,7 @@ class LooseRays {
     meet_sign_.assign(cells, 0);
     key_.assign(cells, -1);
     opens_.assign(cells, 0);
+    made_at_.assign(cells, -1);
     std::vector<Rational> meet(cells);
     for (int a = 0; a < count_; ++a)
       for (int b = 0; b < count_; ++b) relate(a, b, meet);
@@ -69,6 +70,13 @@ class LooseRays {
     const Rational s = parameter(a, b);
     return origin_[a] + s * direction_[a];
   }
+  // The loose point of a and b, made the first time it is asked for (an exact division; scans ask for
+  // each many times).
+  const FilteredPoint& loose_point(int a, int b) {
+    std::optional<FilteredPoint>& made = made_[static_cast<std::size_t>(made_at_[cell(a, b)])];
+    if (!made) made.emplace(point(a, b));
+    return *made;
+  }
   // Where ray a's clipped segment starts (its notch) and ends on the boundary.
   const Place& start(int a) const { return start_[a]; }
   const Place& end(int a) const { return end_[a]; }
@@ -83,6 +91,23 @@ class LooseRays {
     const QPoint w = to_exact(p_[a.edge]);
     const Vec e = to_exact(p_[p_.next(a.edge)]) - w;
     return (a.point - w) * e < (b.point - w) * e;
+  }
+  // The ray ends as terminals of geodesics (geodesics.h): 2a is ray a's notch, 2a + 1 its far end.
+  std::vector<Place> terminals() const {
+    std::vector<Place> out;
+    for (int a = 0; a < count_; ++a) out.insert(out.end(), {start_[a], end_[a]});
+    return out;
+  }
+  // The terminal of ray a's notch (end 0, the same for both rays of a notch) or far end (end 1).
+  static std::size_t terminal(int a, int end) {
+    return end == 0 ? 2 * static_cast<std::size_t>(a & ~1) : 2 * static_cast<std::size_t>(a) + 1;
+  }
+  // Whether an end of ray a is an end of ray b (neither comes before the other on the boundary).
+  bool share_an_end(int a, int b) const {
+    for (const Place* x : {&start_[a], &end_[a]})
+      for (const Place* y : {&start_[b], &end_[b]})
+        if (!before(*x, *y) && !before(*y, *x)) return true;
+    return false;
   }
   std::int64_t stopped_at_vertices() const { return std::count(at_vertex_.begin(), at_vertex_.end(), 1); }
   std::int64_t loose_points() const { return loose_points_; }
@@ -162,6 +187,11 @@ class LooseRays {
       if (s <= 0 || s >= reach_[a] || t <= 0 || t >= reach_[b]) continue;
       const QPoint x = origin_[a] + s * direction_[a];
       opens_[cell(a, b)] = orient(x, origin_[a], origin_[b]) > 0 ? kOpens : kLoose;
+      if (made_at_[cell(b, a)] < 0) {
+        made_at_[cell(b, a)] = static_cast<int>(made_.size());
+        made_.emplace_back();
+      }
+      made_at_[cell(a, b)] = made_at_[cell(b, a)];
       points.push_back(b);
       loose_points_ += a < b;
     }
@@ -178,68 +208,9 @@ class LooseRays {
   std::vector<std::int8_t> cross_sign_, base_side_, meet_sign_, opens_;
   std::vector<int> key_;
   std::vector<std::vector<int>> along_;
+  std::vector<int> made_at_;                          // per pair of rays meeting at a loose point
+  std::vector<std::optional<FilteredPoint>> made_;  // the loose points made so far
   std::int64_t loose_points_ = 0;
-};
-
-// Two rays G and H apart (their clipped segments disjoint but for a shared end) are chords of P;
-// between them lies the part P' of P bounded by G, H and two arcs of the boundary, each from an end of
-// G to an end of H, one of them a single point where G and H share an end (header, (7)). The four ends
-// in boundary order, and which end of H the stretch of H unseen from X through Y reaches.
-class ArcsBetween {
- public:
-  using Place = LooseRays::Place;
-
-  // Ends 0 and 1 are G's notch and far end, 2 and 3 H's. Two disjoint chords do not interleave on the
-  // boundary: G's ends are neighbours in boundary order, and so are H's. A shared end (a ray stopping
-  // at the other's notch, or both at one point) is listed twice, in the order that keeps them so.
-  ArcsBetween(const LooseRays& rays, int G, int H)
-      : rays_(rays), G_(G), ends_{&rays.start(G), &rays.end(G), &rays.start(H), &rays.end(H)} {
-    for (const bool g_first : {true, false}) {
-      order_ = {0, 1, 2, 3};
-      std::sort(order_.begin(), order_.end(), [&](int a, int b) {
-        if (rays_.before(*ends_[a], *ends_[b])) return true;
-        if (rays_.before(*ends_[b], *ends_[a]) || (a < 2) == (b < 2)) return false;
-        return (a < 2) == g_first;
-      });
-      int g_at[2] = {0, 0};
-      for (int k = 0; k < 4; ++k)
-        if (order_[k] < 2) g_at[order_[k]] = k;
-      const int apart = std::abs(g_at[0] - g_at[1]);
-      if (apart == 1 || apart == 3) return;
-    }
-    throw std::logic_error("chazelle-dobkin: two rays apart interleave on the boundary");
-  }
-
-  // Whether an end of G is an end of H (neither comes before the other on the boundary).
-  bool share_an_end() const {
-    for (int a : {0, 1})
-      for (int b : {2, 3})
-        if (!rays_.before(*ends_[a], *ends_[b]) && !rays_.before(*ends_[b], *ends_[a])) return true;
-    return false;
-  }
-
-  // For Y on H not seen from X on G, with c the first point of the boundary on XY from X: an end of H
-  // (0 its notch, 1 its far end) such that X sees no point of H between Y and it (header, (7)). When c
-  // lies on an arc of P', the end that arc reaches; when it lies on the boundary beyond G, XY left X
-  // away from P', so every point of H on Y's side of G's line is unseen: the end on that side.
-  int end_of_h_reached(const Place& c, const QPoint& y) const {
-    int k = 0;
-    while (k < 4 && rays_.before(*ends_[k_th(k)], c)) ++k;
-    const int a = k_th(k + 3), b = k_th(k);
-    if ((k < 4 && !rays_.before(c, *ends_[b])) || (a >= 2 && b >= 2))
-      throw std::logic_error("chazelle-dobkin: XY first meets the boundary at an end of G or H, or beyond H");
-    if ((a < 2) != (b < 2)) return std::max(a, b) - 2;
-    const int y_side = rays_.line_side(G_, y);
-    return rays_.line_side(G_, ends_[2]->point) != -y_side ? 0 : 1;
-  }
-
- private:
-  int k_th(int k) const { return order_[static_cast<std::size_t>(k % 4)]; }
-
-  const LooseRays& rays_;
-  int G_;
-  std::array<const Place*, 4> ends_;
-  std::array<int, 4> order_{};
 };
 
 // A table entry: the inner notch of an X4-pattern found for this outer notch, or -1, and the sides of
@@ -251,14 +222,16 @@ struct Witness {
 
 class ProgramCubic final : public Program {
  public:
-  // How a scan's walks go: carrying what earlier walks of a pass proved over to the later ones (the
-  // algorithm), or each walk testing every step in turn until one passes (the reference the tests hold
-  // the rows of the first against: both must find the same witness for every entry).
-  enum class Walks { kCarryOver, kEachAlone };
+  // How a scan finds each query's witness: from the places X sees, found with geodesics (the
+  // algorithm), or by a walk testing every step in turn with the segment search until one passes (the
+  // reference the tests hold the rows of the first against: both must find the same witness for every
+  // entry).
+  enum class Walks { kGeodesics, kEachAlone };
 
-  explicit ProgramCubic(const Polygon& p, Walks walks = Walks::kCarryOver)
+  explicit ProgramCubic(const Polygon& p, Walks walks = Walks::kGeodesics)
       : Program(p), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
-        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)), walks_(walks) {}
+        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)), walks_(walks),
+        geodesics_(p, patterns().triangulation(), rays_.terminals()) {}
 
   void report(Counters& counters) const {
     counters["x4_loose_points"] = rays_.loose_points();
@@ -267,12 +240,16 @@ class ProgramCubic final : public Program {
     counters["x4_found"] += table_witnesses_;
     counters["x4_scan_steps"] = scan_steps_;
     counters["x4_p4_tests"] = p4_tests_;
-    counters["x4_p4_sides"] = p4_sides_;
     counters["x4_scans_sharing_an_end"] = scans_sharing_an_end_;
     counters["x4_lookup_steps"] = lookup_steps_;
     counters["x4_chosen"] = chosen_;
     counters["x4_chosen_from_w"] = chosen_from_w_;
     counters["x4_rays_at_vertex"] = rays_.stopped_at_vertices();
+    counters["x4_funnel_points"] = funnel_points_;
+    counters["x4_funnel_steps"] = funnel_steps_;
+    counters["geodesic_trees"] = geodesics_.trees();
+    counters["geodesic_triangles"] = geodesics_.triangles();
+    counters["geodesic_tangent_steps"] = geodesics_.tangent_steps();
   }
 
   // The row of interval (g, h) at outer notch q, as STEP 3 reads it: E(g, h)[q] for q < g, W(g, h)[q]
@@ -301,7 +278,7 @@ class ProgramCubic final : public Program {
   // ray G, Y joins z_m and z_h, on h's ray H. E(k, j)[i] is (q, g, m, h) = (i, k, l, j); W(i, l)[j] is
   // (j, i, k, l).
   struct Query {
-    int ray, along;  // Q, and X's rank along G
+    int ray, along, index;  // Q, X's rank along G, and the query's position in the scan
   };
   struct Insert {
     int ray, along, at;  // M, the rank along G where M's line crosses it, and Y's rank along H
@@ -310,8 +287,8 @@ class ProgramCubic final : public Program {
   // A set of places in [0, size): a bitset under summary bitsets (a bit per nonempty word of the level
   // below) up to a single word. Inserting, and finding the nearest member on either side of a place,
   // take O(levels) word operations, levels = max(1, ceil(log_64 size)): at most 3 for the 65534 rays of
-  // 32767 notches. (A linked list with offline insertion points would be O(1), but walks resume from places
-  // that earlier walks left, which needs the nearest member of any place.)
+  // 32767 notches. (A linked list with offline insertion points would be O(1), but a query asks for the
+  // nearest member of any place, where what it sees begins.)
   class PlaceSet {
    public:
     explicit PlaceSet(int size) : size_(size) {
@@ -358,44 +335,38 @@ class ProgramCubic final : public Program {
     std::vector<std::vector<std::uint64_t>> levels_;
   };
 
+  // The funnel of the geodesics from G's two ends to a point e (header, (7)): from the end of G on its
+  // left, seen from the apex (where the two geodesics meet), to the end on its right. For X on the open
+  // G, the geodesic from X to e runs straight to a funnel vertex (funnel_tangent), the first point of
+  // the boundary it meets, and on along the funnel. When the apex is an end of G the geodesic from the
+  // other end runs along G through it, and so does that of every X: the funnel is that end alone.
+  struct Funnel {
+    std::vector<const FilteredPoint*> points;
+    std::size_t apex = 0;
+  };
+
   // One scan's inserts, the places of by_at (in order along H: Y's rank, then the ray, the order of the
-  // walks), where G and H cross when their clipped rays do, and the Y already made (a Y is tested by
-  // the walks of many queries, and making it is an exact division).
+  // walks), and what each query's X sees.
   struct Lists {
     Lists(int g_ray, int h_ray, std::vector<Insert> usable)
-        : G(g_ray), H(h_ray), inserts(std::move(usable)), place(inserts.size()), y_at_place(inserts.size()) {}
+        : G(g_ray), H(h_ray), inserts(std::move(usable)), place(inserts.size()) {}
     int G, H;
     std::vector<Insert> inserts;
     std::vector<int> by_at;       // positions into inserts
     std::vector<int> place;       // by_at inverted: the place of each insert
     std::vector<int> below_rank;  // below_rank[v]: the places whose Y has a rank along H below v
-    bool crossing = false;
-    int crossing_on_g = -1, crossing_on_h = -1;  // the ranks of G ∩ H along G and along H
-    std::vector<std::optional<QPoint>> y_at_place;  // Y of each place, once a walk has needed it
-    std::optional<ArcsBetween> arcs;                // G and H apart: the arcs between them
+    // kGeodesics: per end of H (0 its notch, 1 its far end), the funnel of the geodesics from G's ends
+    // to it; per query the places its X sees, [lo, hi) (header, (7)), once a pass has needed them; and
+    // where the last query's searches ended, in the funnels and along H.
+    std::array<Funnel, 2> funnels;
+    std::vector<std::array<int, 2>> seen;
+    std::array<std::size_t, 2> met_guess{0, 0}, place_guess{0, 0};
 
     const Insert& at_place(int k) const { return inserts[static_cast<std::size_t>(by_at[static_cast<std::size_t>(k)])]; }
   };
 
-  // What the walks of one pass in one direction proved for its later walks, in that direction's steps
-  // (find_visible; each field is used by one kind of walk).
-  struct Memory {
-    int seen_from = INT_MAX;     // crossing, X approaching c: every near step from here on is seen
-    int blocked_to = -1;         // no step up to here is seen (crossing with X receding, or apart)
-    int reach = -1;              // apart: the furthest step seen so far
-    int blocked_from = INT_MAX;  // apart: no step from here on is seen
-    int seen_nearest = INT_MAX;  // apart: the nearest step seen so far
-  };
-
-  // One pass of a scan: the places of the Y inserted so far and, per direction of walk, its Memory.
-  struct Pass {
-    Pass(int size, bool forward) : inserted(size), forward(forward) {}
-    PlaceSet inserted;
-    bool forward;  // queries come in increasing rank along G
-    std::array<Memory, 2> memory;  // walks down (from the top rank along H), walks up
-  };
-
-  // A walk's view of a pass: steps numbered from the end of the list the walk starts at.
+  // A walk's view of the places inserted in a pass: steps numbered from the end of the list the walk
+  // starts at.
   class Walk {
    public:
     Walk(const PlaceSet& inserted, int size, bool down) : inserted_(inserted), size_(size), down_(down) {}
@@ -405,12 +376,6 @@ class ProgramCubic final : public Program {
       if (!down_) return inserted_.at_or_after(step);
       const int k = inserted_.at_or_before(size_ - 1 - step);
       return k < 0 ? size_ : size_ - 1 - k;
-    }
-    // The last inserted step before `step`, or -1.
-    int last_before(int step) const {
-      if (!down_) return inserted_.at_or_before(step - 1);
-      const int k = inserted_.at_or_after(size_ - step);
-      return k == size_ ? -1 : size_ - 1 - k;
     }
 
    private:
@@ -514,17 +479,16 @@ class ProgramCubic final : public Program {
     const std::vector<int> along_g =
         stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).along + 1); });
     for (int k = 0; k < size; ++k) lists.place[static_cast<std::size_t>(lists.by_at[static_cast<std::size_t>(k)])] = k;
-    if (rays_.loose(G, H)) {
-      lists.crossing = true, lists.crossing_on_g = rays_.key(G, H), lists.crossing_on_h = rays_.key(H, G);
-    } else {
-      lists.arcs.emplace(rays_, G, H);  // not collinear: the queries' X lie strictly right of H's line
-      scans_sharing_an_end_ += lists.arcs->share_an_end();
+    if (!rays_.loose(G, H)) scans_sharing_an_end_ += rays_.share_an_end(G, H);
+    if (walks_ == Walks::kGeodesics) {
+      for (int end : {0, 1}) lists.funnels[static_cast<std::size_t>(end)] = funnel(G, LooseRays::terminal(H, end));
+      lists.seen.assign(queries.size(), {-1, -1});
     }
     sweep_forward(queries, lists, along_g, row);
     sweep_backward(queries, lists, along_g, row);
-    Pass parallel(size, true);
+    PlaceSet parallel(size);
     for (int k = 0; k < size; ++k)
-      if (rays_.cross_sign(lists.at_place(k).ray, G) == 0) parallel.inserted.insert(k);
+      if (rays_.cross_sign(lists.at_place(k).ray, G) == 0) parallel.insert(k);
     for (const Query& q : queries) find_visible(q, lists, parallel, row);
   }
 
@@ -542,7 +506,7 @@ class ProgramCubic final : public Program {
       if (turn == 0 && rays_.base_side(Q, H) <= 0) continue;
       if (turn > 0 && crosses_before(Q, H, G)) continue;
       ++table_entries_;
-      out.push_back({Q, rays_.key(G, Q)});
+      out.push_back({Q, rays_.key(G, Q), static_cast<int>(out.size())});
     }
     return out;
   }
@@ -594,216 +558,150 @@ class ProgramCubic final : public Program {
   // P2 for inserts whose line crosses G with cross(u_m, u_g) > 0 asks X beyond the crossing: a prefix
   // along G. Queries are answered before the inserts of the same rank (strict inequality).
   void sweep_forward(const std::vector<Query>& queries, Lists& lists, const std::vector<int>& along_g, Row& row) {
-    Pass pass(static_cast<int>(lists.inserts.size()), true);
+    PlaceSet inserted(static_cast<int>(lists.inserts.size()));
     std::size_t next = 0;
     for (const Query& q : queries) {
       for (; next < along_g.size() && lists.inserts[static_cast<std::size_t>(along_g[next])].along < q.along; ++next)
-        admit(lists, along_g[next], 1, pass);
-      find_visible(q, lists, pass, row);
+        admit(lists, along_g[next], 1, inserted);
+      find_visible(q, lists, inserted, row);
     }
   }
 
   void sweep_backward(const std::vector<Query>& queries, Lists& lists, const std::vector<int>& along_g, Row& row) {
-    Pass pass(static_cast<int>(lists.inserts.size()), false);
+    PlaceSet inserted(static_cast<int>(lists.inserts.size()));
     std::size_t next = along_g.size();
     for (auto q = queries.rbegin(); q != queries.rend(); ++q) {
       for (; next > 0 && lists.inserts[static_cast<std::size_t>(along_g[next - 1])].along > q->along; --next)
-        admit(lists, along_g[next - 1], -1, pass);
-      find_visible(*q, lists, pass, row);
+        admit(lists, along_g[next - 1], -1, inserted);
+      find_visible(*q, lists, inserted, row);
     }
   }
 
   // Inserts insert k into the pass when its line crosses G with the pass's sign.
-  void admit(const Lists& lists, int k, int sign, Pass& pass) {
+  void admit(const Lists& lists, int k, int sign, PlaceSet& inserted) {
     ++scan_steps_;
     if (rays_.cross_sign(lists.inserts[static_cast<std::size_t>(k)].ray, lists.G) == sign)
-      pass.inserted.insert(lists.place[static_cast<std::size_t>(k)]);
+      inserted.insert(lists.place[static_cast<std::size_t>(k)]);
   }
+
+  static bool has_witness(const Row& row, int q) { return !row.empty() && row[static_cast<std::size_t>(q)].inner >= 0; }
 
   // P1 bounds Y's rank along H on one side (or not at all when Q and H are parallel): a walk takes the
   // inserted Y from the far end of the list inwards while P1 holds, and the first that passes P4 (XY in
-  // P) is the witness. Steps [0, end) are those where P1 holds.
-  void find_visible(const Query& query, Lists& lists, Pass& pass, Row& row) {
-    const int q = LooseRays::notch(query.ray);
-    if (pass.inserted.empty() || (!row.empty() && row[static_cast<std::size_t>(q)].inner >= 0)) return;
+  // P) is the witness. Steps [0, end) are those where P1 holds: down from the top of H when Q's
+  // direction does not turn clockwise from H's, else up from the bottom.
+  int p1_end(const Query& query, const Lists& lists) const {
     const int turn = rays_.cross_sign(query.ray, lists.H);
     const int size = static_cast<int>(lists.inserts.size());
+    if (turn == 0) return size;
     const int bound = rays_.key(lists.H, query.ray);
     const auto places_below = [&](int rank) { return lists.below_rank[static_cast<std::size_t>(rank)]; };
-    const int end = turn == 0 ? size : (turn > 0 ? size - places_below(bound + 1) : places_below(bound));
-    const Walk walk(pass.inserted, size, turn >= 0);
-    std::optional<QPoint> x;
-    const auto y_at = [&](int step) -> const QPoint& {
-      std::optional<QPoint>& y = lists.y_at_place[static_cast<std::size_t>(walk.place(step))];
-      if (!y) y = rays_.point(lists.H, lists.at_place(walk.place(step)).ray);
-      return *y;
-    };
-    const auto visible = [&](int step) {
-      ++scan_steps_;
-      ++p4_tests_;
-      if (!x) x = rays_.point(lists.G, query.ray);
-      return patterns().inside(*x, y_at(step));
-    };
-    // Rays apart: where XY first meets the boundary tells on which side of what X sees Y lies (header,
-    // (7)). The walk starts at H's far end when it walks down.
-    const auto side_unseen = [&](int step) {
-      ++p4_sides_;
-      const QPoint& y = y_at(step);
-      const auto contact = patterns().first_contact(*x, y);
-      if (!contact) throw std::logic_error("chazelle-dobkin: an unseen XY meets no boundary");
-      return lists.arcs->end_of_h_reached(*contact, y) == (turn >= 0 ? 1 : 0) ? Side::kStartSide : Side::kFarSide;
-    };
-    Memory& memory = pass.memory[turn >= 0 ? 0 : 1];
+    return turn > 0 ? size - places_below(bound + 1) : places_below(bound);
+  }
+
+  // The witness of a query among the places inserted in a pass, if any: the first inserted step of its
+  // walk where P1 holds and X sees Y. kGeodesics reads it from the places X sees (one lookup);
+  // kEachAlone tests the steps in turn.
+  void find_visible(const Query& query, Lists& lists, const PlaceSet& inserted, Row& row) {
+    const int q = LooseRays::notch(query.ray);
+    if (inserted.empty() || has_witness(row, q)) return;
+    const bool down = rays_.cross_sign(query.ray, lists.H) >= 0;
+    const int size = static_cast<int>(lists.inserts.size()), end = p1_end(query, lists);
+    const Walk walk(inserted, size, down);
     int found = -1;
     if (walks_ == Walks::kEachAlone) {
-      found = walk_alone(walk, end, visible);
-    } else if (lists.crossing) {
-      const int c = lists.crossing_on_h;
-      const int near_end = turn >= 0 ? size - places_below(c) : places_below(c + 1);
-      const bool approaching = pass.forward ? query.along <= lists.crossing_on_g : query.along >= lists.crossing_on_g;
-      found = approaching ? walk_approaching(walk, near_end, end, memory, visible) : walk_receding(walk, near_end, end, memory, visible);
-      if (found < 0) found = walk_beyond_crossing(walk, near_end, end, visible);
-    } else {
-      // Apart, what X sees moves up along H as X moves up along G (header, (6)); a walk starts at the
-      // bottom when turn < 0.
-      const bool moving_away = pass.forward == (turn < 0);
-      found = moving_away ? search_apart_moving_away(walk, end, memory, visible, side_unseen, unseen_)
-                          : search_apart_moving_back(walk, end, memory, visible, side_unseen, unseen_);
+      const QPoint& x = rays_.loose_point(lists.G, query.ray).exact;
+      for (int step = walk.first_from(0); step < end && found < 0; step = walk.first_from(step + 1)) {
+        ++scan_steps_;
+        ++p4_tests_;
+        if (patterns().inside(x, y_at(lists, walk.place(step)).exact)) found = step;
+      }
+    } else if (walk.first_from(0) < end) {
+      const auto [lo, hi] = seen_places(query, lists);
+      const int from = down ? size - hi : lo, to = down ? size - lo : hi;  // the steps X sees
+      const int first = walk.first_from(from);
+      if (first < std::min(to, end)) found = first;
     }
     if (found >= 0) record(row, q, query.ray, lists.G, lists.at_place(walk.place(found)).ray, lists.H);
   }
 
-  // Each inserted step in turn, until one is seen: the first seen, or -1.
-  template <class Visible>
-  static int walk_alone(const Walk& walk, int end, const Visible& visible) {
-    for (int step = walk.first_from(0); step < end; step = walk.first_from(step + 1))
-      if (visible(step)) return step;
-    return -1;
-  }
+  const FilteredPoint& y_at(const Lists& lists, int place) { return rays_.loose_point(lists.H, lists.at_place(place).ray); }
 
-  // The walks of crossing rays (header, (6)). The near steps [0, near_end), on the walk's side of c (c
-  // included), that X sees are those from a threshold t(X) on; of the steps beyond c, those up to one.
-  // Along a pass t(X) only falls while X moves towards c, and only rises while X moves away from it.
-  //
-  // X moving towards c: every near step from `seen_from` on is seen (an earlier X saw it). The walk
-  // tests the inserted steps before it, one by one back towards its start, while they are seen.
-  template <class Visible>
-  static int walk_approaching(const Walk& walk, int near_end, int end, Memory& memory, const Visible& visible) {
-    int& seen_from = memory.seen_from;
-    seen_from = std::min(seen_from, near_end);
-    for (int step = walk.last_before(std::min(seen_from, end)); step >= 0 && visible(step); step = walk.last_before(step))
-      seen_from = step;
-    const int first = walk.first_from(seen_from);
-    return first < std::min(near_end, end) ? first : -1;
-  }
+  // How X on G sees Y on H: seen, or not with no seen point of H between Y and H's notch, or its far
+  // end (header, (7)).
+  enum class View { kSeen, kTowardsNotch, kTowardsFarEnd };
 
-  // X moving away from c: no step up to `blocked_to` is seen (not seen by an earlier X).
-  template <class Visible>
-  static int walk_receding(const Walk& walk, int near_end, int end, Memory& memory, const Visible& visible) {
-    for (int step = walk.first_from(memory.blocked_to + 1); step < std::min(near_end, end); step = walk.first_from(step + 1)) {
-      if (visible(step)) return step;
-      memory.blocked_to = step;
-    }
-    return -1;
-  }
+  // What X on G sees of H (header, (7)): f1 and f2, the first points of the boundary on the geodesics
+  // from X to H's notch and to its far end, and the orientation of X, f1, f2, 0 when X sees no point of
+  // H.
+  struct Sight {
+    std::array<const FilteredPoint*, 2> first_met{};
+    int angle = 0;
+  };
 
-  // No near step is a witness: of the steps beyond c only the first can be.
-  template <class Visible>
-  static int walk_beyond_crossing(const Walk& walk, int near_end, int end, const Visible& visible) {
-    const int first = walk.first_from(near_end);
-    return first < end && visible(first) ? first : -1;
-  }
-
-  // The searches of rays apart (header, (7)). Along a walk, the steps X does not see before those it
-  // sees are on the start side, those after on the far side; kUnseen is a step not seen whose side was
-  // not asked for.
-  enum class Side { kSeen, kStartSide, kFarSide, kUnseen };
-
-  // Most walks end within their first steps, and a side costs a second search: the first kPlainSteps
-  // steps are tested in turn, as the walks of (6) do, asking no side that (6) does not already give.
-  static constexpr int kPlainSteps = 2;
-
-  // The first inserted step in [from, limit) that X sees, or limit when there is none: kPlainSteps
-  // steps in turn, then the first step not on the start side, found by galloping and bisecting with
-  // O(log(limit - from)) probes (its side tells whether X sees it). probe(step, ask) gives a step's
-  // side, asking for it (a first contact) only when `ask` and (6) does not give it. The steps probed
-  // that X does not see go to `unseen`.
-  template <class Probe>
-  static int first_seen(const Walk& walk, int from, int limit, const Probe& probe, std::vector<int>& unseen) {
-    int a = from, b = limit;
-    for (int k = 0; k < kPlainSteps; ++k) {
-      const int step = walk.first_from(a);
-      if (step >= b) return b;
-      const Side side = probe(step, false);
-      if (side == Side::kSeen) return step;
-      unseen.push_back(step);
-      if (side == Side::kFarSide) return limit;
-      a = step + 1;
-    }
-    int found = limit;
-    const auto look = [&](int step) {
-      const Side side = probe(step, true);
-      if (side != Side::kSeen) unseen.push_back(step);
-      if (side == Side::kStartSide) {
-        a = step + 1;
-      } else {
-        b = step;
-        found = side == Side::kSeen ? step : limit;
-      }
+  // The places X sees, [lo, hi) in by_at order (header, (7)). Each search starts where the last
+  // query's ended: along a pass the queries come in order along G, the first points met move
+  // monotonically over the funnels (F3), and the ends of what X sees along H monotonically too (M), so
+  // a scan costs O(queries + inserts + funnels) orientations.
+  std::array<int, 2> seen_places(const Query& query, Lists& lists) {
+    std::array<int, 2>& seen = lists.seen[static_cast<std::size_t>(query.index)];
+    if (seen[0] >= 0) return seen;
+    seen = {0, 0};
+    const FilteredPoint& x = rays_.loose_point(lists.G, query.ray);
+    Sight sight;
+    for (std::size_t end : {0, 1}) sight.first_met[end] = &first_point_met(lists.funnels[end], x, lists.met_guess[end]);
+    sight.angle = orient(x, *sight.first_met[0], *sight.first_met[1]);
+    if (sight.angle == 0) return seen;
+    const auto view = [&](std::size_t place) {
+      ++scan_steps_;
+      ++p4_tests_;
+      return view_from(x, sight, y_at(lists, static_cast<int>(place)));
     };
-    for (int gap = 1; a < b; gap *= 2) {
-      const int at = std::min(b, a + gap - 1), step = walk.first_from(at);
-      if (step >= b) {
-        b = at;
-        break;
-      }
-      look(step);
-      if (b == step) break;
-    }
-    while (a < b) {
-      const int mid = a + (b - a) / 2, step = walk.first_from(mid);
-      if (step >= b) b = mid;
-      else look(step);
-    }
-    return found;
+    const std::size_t size = lists.inserts.size();
+    auto& [lo, hi] = lists.place_guess;
+    lo = first_holding(0, size, lo, [&](std::size_t k) { return view(k) != View::kTowardsNotch; });
+    hi = first_holding(lo, size, hi, [&](std::size_t k) { return view(k) == View::kTowardsFarEnd; });
+    seen = {static_cast<int>(lo), static_cast<int>(hi)};
+    return seen;
   }
 
-  // What X sees moves away from the walk's start along the pass: the search starts after the steps no
-  // later X sees, and records what (6) allows of the steps X did not see.
-  template <class Visible, class SideUnseen>
-  static int search_apart_moving_away(const Walk& walk, int end, Memory& memory, const Visible& visible,
-                                      const SideUnseen& side_unseen, std::vector<int>& unseen) {
-    // A step up to the furthest seen by an earlier X, not seen by X, is on the start side (6).
-    const auto probe = [&](int step, bool ask) {
-      if (visible(step)) return Side::kSeen;
-      if (step <= memory.reach) return Side::kStartSide;
-      return ask ? side_unseen(step) : Side::kUnseen;
-    };
-    unseen.clear();
-    const int found = first_seen(walk, memory.blocked_to + 1, end, probe, unseen);
-    if (found < end) memory.reach = std::max(memory.reach, found);
-    for (const int step : unseen)
-      if (step <= memory.reach) memory.blocked_to = std::max(memory.blocked_to, step);
-    return found < end ? found : -1;
+  // The funnel of the geodesics from G's ends to terminal e: O(their length), O(r) when no vertex of 180
+  // degrees lies on them (a geodesic bends at notches only).
+  Funnel funnel(int G, std::size_t e) {
+    geodesics_.path(LooseRays::terminal(G, 0), e, from_notch_);
+    geodesics_.path(LooseRays::terminal(G, 1), e, from_far_end_);
+    std::size_t a = from_notch_.size(), b = from_far_end_.size();
+    while (a > 0 && b > 0 && from_notch_[a - 1] == from_far_end_[b - 1]) --a, --b;
+    Funnel f;
+    if (a == 0 || b == 0) {
+      f.points.push_back(a == 0 ? from_notch_[0] : from_far_end_[0]);
+      return f;
+    }
+    const int turn = orient(*from_notch_[a], *from_far_end_[b - 1], *from_notch_[a - 1]);
+    if (turn == 0) throw std::logic_error("chazelle-dobkin: a funnel of geodesics with no angle at its apex");
+    const std::vector<const FilteredPoint*>& left = turn > 0 ? from_notch_ : from_far_end_;
+    const std::vector<const FilteredPoint*>& right = turn > 0 ? from_far_end_ : from_notch_;
+    f.apex = turn > 0 ? a : b;
+    f.points.assign(left.begin(), left.begin() + static_cast<std::ptrdiff_t>(f.apex) + 1);
+    for (std::size_t k = turn > 0 ? b : a; k-- > 0;) f.points.push_back(right[k]);
+    funnel_points_ += static_cast<std::int64_t>(f.points.size());
+    return f;
   }
 
-  // ... and back towards it: the search stops before the steps no later X sees.
-  template <class Visible, class SideUnseen>
-  static int search_apart_moving_back(const Walk& walk, int end, Memory& memory, const Visible& visible,
-                                      const SideUnseen& side_unseen, std::vector<int>& unseen) {
-    // A step at or after the nearest seen by an earlier X, not seen by X, is on the far side (6).
-    const auto probe = [&](int step, bool ask) {
-      if (visible(step)) return Side::kSeen;
-      if (step >= memory.seen_nearest) return Side::kFarSide;
-      return ask ? side_unseen(step) : Side::kUnseen;
-    };
-    unseen.clear();
-    const int limit = std::min(end, memory.blocked_from);
-    const int found = first_seen(walk, 0, limit, probe, unseen);
-    if (found < limit) memory.seen_nearest = std::min(memory.seen_nearest, found);
-    for (const int step : unseen)
-      if (step >= memory.seen_nearest) memory.blocked_from = std::min(memory.blocked_from, step);
-    return found < limit ? found : -1;
+  // The first point of the boundary on the geodesic from X (on the open G) to the funnel's e (F3),
+  // searched from `guess`, which becomes its index.
+  const FilteredPoint& first_point_met(const Funnel& f, const FilteredPoint& x, std::size_t& guess) {
+    if (f.points.size() > 1) guess = funnel_tangent(f.points, 0, f.points.size() - 1, f.apex, x, guess, funnel_steps_);
+    return *f.points[f.points.size() > 1 ? guess : 0];
+  }
+
+  // F4: X sees exactly the points of the open H strictly inside the angle (less than 180 degrees)
+  // between the rays from X through f1 and f2; nothing when that angle is empty. O(1).
+  static View view_from(const FilteredPoint& x, const Sight& sight, const FilteredPoint& y) {
+    const auto& [f1, f2] = sight.first_met;
+    if (sight.angle == 0 || orient(x, *f1, y) != sight.angle) return View::kTowardsNotch;
+    if (orient(x, y, *f2) != sight.angle) return View::kTowardsFarEnd;
+    return View::kSeen;
   }
 
   void record(Row& row, int q, int Q, int G, int M, int H) {
@@ -818,8 +716,9 @@ class ProgramCubic final : public Program {
   LooseRays rays_;
   std::vector<Row> rows_;  // at(g, h): the row of interval (g, h), empty when it has no witness
   Walks walks_;
-  std::vector<int> unseen_;  // the steps a search of rays apart probed and X did not see
-  std::int64_t p4_sides_ = 0, scans_sharing_an_end_ = 0;
+  GeodesicTrees geodesics_;
+  std::vector<const FilteredPoint*> from_notch_, from_far_end_;  // the geodesics of funnel(), reused
+  std::int64_t scans_sharing_an_end_ = 0, funnel_points_ = 0, funnel_steps_ = 0;
   std::int64_t table_entries_ = 0, table_witnesses_ = 0, scan_steps_ = 0, p4_tests_ = 0, lookup_steps_ = 0, chosen_ = 0,
                chosen_from_w_ = 0;
 };

@@ -1,14 +1,12 @@
 // Segments against the convex chains of a polygon's boundary (algorithms/boundary_chains.h), against
 // testing every edge: on every generator family, for segments between vertices (along edges and
 // through collinear vertices on the axis-parallel families), points on edges and points in the
-// bounding box, with and without the edges at a vertex left out; and the first point met from a
-// segment's start, against the nearest of the points met on every edge.
+// bounding box, with and without the edges at a vertex left out.
 #include "algorithms/boundary_chains.h"
 #include "generators/family.h"
 
 #include <gtest/gtest.h>
 
-#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -26,33 +24,6 @@ bool meets_by_every_edge(const Polygon& p, const std::vector<QPoint>& x, const Q
     if (CGAL::do_intersect(st, ExactSegment(x[e], x[e1]))) return true;
   }
   return false;
-}
-
-// The first contact from s by testing every edge: the point met nearest to s, and the vertex it equals
-// or the edge it lies inside.
-std::optional<boundary::SegmentSearch::Contact> first_contact_by_every_edge(const Polygon& p, const std::vector<QPoint>& x,
-                                                                            const QPoint& s, const QPoint& t) {
-  const ExactSegment st(s, t);
-  std::optional<QPoint> nearest;
-  const auto keep = [&](const QPoint& q) {
-    if (!nearest || (q - s) * (t - s) < (*nearest - s) * (t - s)) nearest = q;
-  };
-  for (std::size_t e = 0; e < p.size(); ++e) {
-    const auto met = CGAL::intersection(st, ExactSegment(x[e], x[p.next(e)]));
-    if (!met) continue;
-    if (const QPoint* q = boost::get<QPoint>(&*met)) {
-      keep(*q);
-    } else {
-      keep(boost::get<ExactSegment>(*met).source());
-      keep(boost::get<ExactSegment>(*met).target());
-    }
-  }
-  if (!nearest) return std::nullopt;
-  for (std::size_t e = 0; e < p.size(); ++e)
-    if (x[e] == *nearest) return boundary::SegmentSearch::Contact{e, true, *nearest};
-  for (std::size_t e = 0; e < p.size(); ++e)
-    if (ExactSegment(x[e], x[p.next(e)]).has_on(*nearest)) return boundary::SegmentSearch::Contact{e, false, *nearest};
-  return std::nullopt;
 }
 
 QPoint along(const QPoint& a, const QPoint& b, const Rational& f) {
@@ -124,35 +95,6 @@ TEST(BoundaryChains, SegmentSearchAgreesWithEveryEdge) {
   EXPECT_GE(all.size(), 10u);
   EXPECT_GT(meeting, 1000);
   EXPECT_GT(missing, 1000);
-}
-
-TEST(BoundaryChains, FirstContactIsTheNearestPointMet) {
-  std::mt19937_64 rng(11);
-  int at_vertices = 0, away_from_start = 0;
-  const std::vector<Case> all = cases(5);
-  for (const auto& [label, p, x] : all) {
-    boundary::SegmentSearch search(p, x);
-    const std::vector<QPoint> ends = endpoints(p, x, rng);
-    // Starts spread over the bounding box, mostly off the boundary; ends anywhere.
-    std::uniform_int_distribution<std::size_t> pick(0, ends.size() - 1), start(2 * p.size(), ends.size() - 1);
-    for (int k = 0; k < 1000; ++k) {
-      const QPoint s = ends[start(rng)], t = ends[pick(rng)];
-      if (s == t) continue;
-      const auto expected = first_contact_by_every_edge(p, x, s, t);
-      const auto found = search.first_contact(s, t);
-      ASSERT_EQ(found.has_value(), expected.has_value()) << label << " s=" << s << " t=" << t;
-      ASSERT_EQ(search.meets_boundary(s, t), expected.has_value());
-      if (!expected) continue;
-      ASSERT_TRUE(found->point == expected->point && found->edge == expected->edge && found->at_vertex == expected->at_vertex)
-          << label << " s=" << s << " t=" << t << ": " << found->point << " at " << found->edge << " against "
-          << expected->point << " at " << expected->edge;
-      at_vertices += expected->at_vertex;
-      away_from_start += expected->point != s;
-    }
-  }
-  EXPECT_GE(all.size(), 10u);
-  EXPECT_GT(away_from_start, 2500);
-  EXPECT_GT(at_vertices, 200);
 }
 
 }  // namespace

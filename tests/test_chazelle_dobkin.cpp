@@ -14,6 +14,7 @@
 // brute force given the program's S; and the counters the time bound rests on.
 #include "algorithms/chazelle_dobkin_patterns.h"
 #include "algorithms/chazelle_dobkin_tables.h"
+#include "algorithms/geodesics.h"
 #include "algorithms/keil_snoeyink.h"
 #include "algorithms/naive.h"
 #include "core/registry.h"
@@ -22,9 +23,12 @@
 #include "generators/rng.h"
 #include "tests/brute_force.h"
 
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 #include <string>
@@ -402,6 +406,129 @@ std::size_t same_count(const Polygon& p, const std::string& where) {
   return tables;
 }
 
+// Geodesics (algorithms/geodesics.h) against a brute force that shares no code with them: which pairs of
+// points (vertices, and points inside every third edge) see each other in the closed polygon, tested
+// against every edge and vertex, then Dijkstra's shortest paths over those pairs. Every geodesic must
+// join points that see each other, list every vertex it passes through (the tie convention), and be as
+// long as the brute force's shortest path.
+struct GeodesicCheck {
+  explicit GeodesicCheck(const Polygon& polygon) : p(polygon) {
+    for (std::size_t v = 0; v < p.size(); ++v) {
+      corners.push_back(to_exact(p[v]));
+      terminals.push_back({v, true, corners.back()});
+    }
+    for (std::size_t e = 0; e < p.size(); e += 3) {
+      const QPoint a = to_exact(p[e]), b = to_exact(p[p.next(e)]);
+      terminals.push_back({e, false, a + (b - a) / Rational(3)});
+    }
+    const std::size_t count = terminals.size();
+    sees.assign(count * count, 0);
+    for (std::size_t a = 0; a < count; ++a)
+      for (std::size_t b = a + 1; b < count; ++b)
+        sees[a * count + b] = sees[b * count + a] = in_closed_polygon(terminals[a].point, terminals[b].point);
+    distance.assign(count * count, 0);
+    for (std::size_t from = 0; from < count; ++from) dijkstra(from);
+  }
+
+  // Whether the closed segment ab lies in the closed polygon: no edge crosses it inside both, and
+  // between the vertices on it each piece lies inside or along the boundary (its midpoint does).
+  bool in_closed_polygon(const QPoint& a, const QPoint& b) const {
+    std::vector<Rational> cuts{Rational(0), Rational(1)};
+    const std::size_t n = corners.size();
+    for (std::size_t e = 0; e < n; ++e) {
+      const QPoint &u = corners[e], &w = corners[(e + 1) % n];
+      if (orient(a, b, u) * orient(a, b, w) < 0 && orient(u, w, a) * orient(u, w, b) < 0) return false;
+      if (orient(a, b, u) == 0 && CGAL::collinear_are_strictly_ordered_along_line(a, u, b))
+        cuts.push_back(((u - a) * (b - a)) / ((b - a) * (b - a)));
+    }
+    std::sort(cuts.begin(), cuts.end());
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const QPoint mid = a + ((cuts[k] + cuts[k + 1]) / Rational(2)) * (b - a);
+      if (CGAL::bounded_side_2(corners.begin(), corners.end(), mid, ExactKernel()) == CGAL::ON_UNBOUNDED_SIDE)
+        return false;
+    }
+    return true;
+  }
+
+  double length(const QPoint& a, const QPoint& b) const { return std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b))); }
+
+  void dijkstra(std::size_t from) {
+    const std::size_t count = terminals.size();
+    std::vector<double> best(count, 1e300);
+    std::vector<char> done(count, 0);
+    best[from] = 0;
+    for (std::size_t round = 0; round < count; ++round) {
+      std::size_t u = count;
+      for (std::size_t v = 0; v < count; ++v)
+        if (!done[v] && (u == count || best[v] < best[u])) u = v;
+      done[u] = 1;
+      for (std::size_t v = 0; v < count; ++v)
+        if (sees[u * count + v]) best[v] = std::min(best[v], best[u] + length(terminals[u].point, terminals[v].point));
+    }
+    for (std::size_t v = 0; v < count; ++v) distance[from * count + v] = best[v];
+  }
+
+  // The terminal at point q (every point of a geodesic is one: a vertex or its end).
+  std::size_t terminal_at(const QPoint& q) const {
+    for (std::size_t t = 0; t < terminals.size(); ++t)
+      if (terminals[t].point == q) return t;
+    return terminals.size();
+  }
+
+  const Polygon& p;
+  std::vector<QPoint> corners;
+  std::vector<GeodesicTrees::Terminal> terminals;
+  std::vector<char> sees;
+  std::vector<double> distance;
+};
+
+TEST(Geodesics, ShortestPathsOfTheBruteForce) {
+  std::vector<std::pair<Polygon, std::string>> polygons;
+  for (const Sample& s : small_samples()) {
+    const Polygon p = make(s);
+    for (std::size_t by : {std::size_t{0}, p.size() / 3}) polygons.emplace_back(rotated(p, by), label(s) + " rotated " + std::to_string(by));
+  }
+  // A U whose notches are joined by an edge that geodesics run along, with 180-degree vertices on the
+  // bottom, on a side and on a notch's edge.
+  for (const bool on_notch_edge : {false, true}) {
+    std::vector<Point> u{{0, 0}, {3, 0}, {6, 0}, {6, 6}, {4, 6}, {4, 2}, {2, 2}, {2, 6}, {0, 6}, {0, 3}};
+    if (on_notch_edge) u.insert(u.begin() + 7, Point(2, 4));
+    polygons.emplace_back(Polygon::make(u), on_notch_edge ? "U with a flat vertex on a notch's edge" : "U");
+  }
+  std::int64_t checked = 0, bent = 0;
+  for (const auto& [p, where] : polygons) {
+    const GeodesicCheck brute(p);
+    const VisibilityGraph triangulation(p);
+    GeodesicTrees trees(p, triangulation, brute.terminals);
+    const std::size_t count = brute.terminals.size();
+    std::vector<const FilteredPoint*> path;
+    for (std::size_t from = 0; from < count; ++from)
+      for (std::size_t to = 0; to < count; ++to) {
+        trees.path(from, to, path);
+        ASSERT_EQ(path.front()->exact, brute.terminals[from].point) << where;
+        ASSERT_EQ(path.back()->exact, brute.terminals[to].point) << where;
+        double length = 0;
+        for (std::size_t k = 0; k + 1 < path.size(); ++k) {
+          const QPoint &a = path[k]->exact, &b = path[k + 1]->exact;
+          const std::size_t ta = brute.terminal_at(a), tb = brute.terminal_at(b);
+          ASSERT_LT(ta, count) << where;
+          ASSERT_LT(tb, count) << where;
+          EXPECT_TRUE(brute.sees[ta * count + tb]) << where << ": " << from << " -> " << to << " step " << k;
+          for (const QPoint& v : brute.corners)
+            EXPECT_FALSE(orient(a, b, v) == 0 && CGAL::collinear_are_strictly_ordered_along_line(a, v, b))
+                << where << ": " << from << " -> " << to << " passes through a vertex it does not list";
+          length += brute.length(a, b);
+        }
+        const double expected = brute.distance[from * count + to];
+        EXPECT_NEAR(length, expected, 1e-9 * std::max(1.0, expected)) << where << ": " << from << " -> " << to;
+        ++checked;
+        bent += path.size() > 2;
+      }
+  }
+  EXPECT_GT(checked, 15000);
+  EXPECT_GT(bent, 6000);
+}
+
 TEST(ChazelleDobkinTables, SameCountAsEveryPairOnEveryFamily) {
   std::size_t compared = 0;
   for (const Family& f : families())
@@ -753,13 +880,11 @@ TEST(ChazelleDobkinTables, RowsHoldExactlyTheLooseX4OfTightInnerNotches) {
   EXPECT_GT(seen.in_w, 200);
 }
 
-// The walks of a pass skip the Y that earlier walks proved X cannot see (crossing rays: the triangle X c Y;
-// rays apart: the convex quadrilateral of two segments in P, and the searches that bisect on the side of
-// the first contact; header of algorithms/chazelle_dobkin_cubic.cpp, (6) and (7)).
-// Each walk must still stop at the same Y as a walk that tests every Y in turn: every entry of every row,
-// inner notch and rays, the same in both on polygons of every family large enough for long passes (and
-// each rotated by a third), and the skips must save tests.
-TEST(ChazelleDobkinTables, CarriedOverWalksFindTheWitnessesOfWalksAlone) {
+// The scans read each query's witness from the places its X sees, found with geodesics (header of
+// algorithms/chazelle_dobkin_cubic.cpp, (7)). It must be the Y where a walk testing every Y in turn with
+// the segment search stops: every entry of every row, inner notch and rays, the same in both on polygons
+// of every family large enough for long passes (and each rotated by a third).
+TEST(ChazelleDobkinTables, GeodesicsFindTheWitnessesOfWalksAlone) {
   std::vector<std::pair<Polygon, std::string>> polygons;
   for (const Family& f : families())
     for (std::size_t r : {12, 24, 40})
@@ -771,53 +896,45 @@ TEST(ChazelleDobkinTables, CarriedOverWalksFindTheWitnessesOfWalksAlone) {
             polygons.emplace_back(rotated(base, by), label({f.name, n, r, seed}) + " rotated " + std::to_string(by));
         }
       }
-  // Where a walk of rays apart whose seen Y move back stopped one Y too early would lose a witness
-  // (row (3, 13) at outer notch 2; found by a stress run over 125,815 polygons).
+  // Where an earlier walk of rays apart, whose seen Y moved back, stopped one Y too early and lost a
+  // witness (row (3, 13) at outer notch 2; found by a stress run over 125,815 polygons).
   polygons.emplace_back(rotated(make({"random", 22, 16, 2}), 12), "random n=22 r=16 seed=2 rotated 12");
-  // Long passes of rays apart, where the searches of (7) probe past the first steps.
+  // Long passes of rays apart, where what X sees starts past the first steps.
   const Polygon notch_heavy = Polygon::make(generate("notch-heavy", 80, std::nullopt, 1));
   for (std::size_t by : {0, 27}) polygons.emplace_back(rotated(notch_heavy, by), "notch-heavy n=80 rotated " + std::to_string(by));
   // Polygons whose scans of rays apart share ends most often among some 850 small ones generated
-  // (a ray stopping at another's notch, or two at one point): ArcsBetween's tie-break.
+  // (a ray stopping at another's notch, or two at one point): a geodesic that is a single point.
   for (const Sample& s : {Sample{"random", 40, 20, 12}, Sample{"notch-heavy", 28, 24, 3}, Sample{"random", 24, 12, 8}}) {
     const Polygon base = make(s);
     for (std::size_t by : {std::size_t{0}, base.size() / 2}) polygons.emplace_back(rotated(base, by), label(s) + " rotated " + std::to_string(by));
   }
-  std::int64_t carried_tests = 0, alone_tests = 0, witnesses = 0, sides = 0, shared_ends = 0;
+  std::int64_t witnesses = 0, shared_ends = 0;
   for (const auto& [p, where] : polygons) {
-    cd::ProgramCubic carried(p), alone(p, cd::ProgramCubic::Walks::kEachAlone);
-    Counters carried_counters, alone_counters;
-    carried.run(carried_counters);
+    cd::ProgramCubic seen(p), alone(p, cd::ProgramCubic::Walks::kEachAlone);
+    Counters seen_counters, alone_counters;
+    seen.run(seen_counters);
     alone.run(alone_counters);
-    carried.report(carried_counters);
-    alone.report(alone_counters);
+    seen.report(seen_counters);
     const int notches = static_cast<int>(p.reflex_count());
     for (int g = 0; g < notches; ++g)
       for (int h = g + 2; h < notches; ++h)
         for (int q = 0; q < notches; ++q) {
-          const cd::Witness a = carried.entry(g, h, q), b = alone.entry(g, h, q);
+          const cd::Witness a = seen.entry(g, h, q), b = alone.entry(g, h, q);
           EXPECT_TRUE(a.inner == b.inner && a.sides == b.sides)
               << where << " row (" << g << ", " << h << ") at " << q << ": " << a.inner << "/" << int{a.sides}
               << " against " << b.inner << "/" << int{b.sides};
           witnesses += a.inner >= 0;
         }
-    carried_tests += carried_counters["x4_p4_tests"];
-    alone_tests += alone_counters["x4_p4_tests"];
-    sides += carried_counters["x4_p4_sides"];
-    shared_ends += carried_counters["x4_scans_sharing_an_end"];
+    shared_ends += seen_counters["x4_scans_sharing_an_end"];
   }
   EXPECT_GT(witnesses, 5000);
-  EXPECT_LT(carried_tests, alone_tests);
-  // The searches of rays apart asked for sides (header, (7)).
-  EXPECT_GT(sides, 200);
-  // Scans of rays apart that share an end (a ray stopping at the other's notch, or both at one point),
-  // whose ends ArcsBetween orders so that the two chords do not interleave.
+  // Scans of rays apart that share an end (a ray stopping at the other's notch, or both at one point).
   EXPECT_GT(shared_ends, 15);
 }
 
-// The list steps of the scans (walks to P4 tests aside) and STEP 3's lookups grow as r^3 at most: the
-// counters that the header's time bound rests on, checked against it with the constants of a loose count
-// (about r^2/2 intervals, 4 runs of a few list positions per ray each).
+// The list steps of the scans, their P4 decisions and funnels, and STEP 3's lookups grow as r^3 at most:
+// the counters that the header's time bound rests on, checked against it with the constants of a loose
+// count (about r^2/2 intervals, 4 runs of a few list positions per ray each).
 TEST(ChazelleDobkinTables, ScanAndLookupsStayCubic) {
   std::vector<Sample> samples = small_samples();
   samples.push_back({"random", 60, 20, 1});
@@ -829,6 +946,10 @@ TEST(ChazelleDobkinTables, ScanAndLookupsStayCubic) {
     find_algorithm("chazelle-dobkin")->run(p, counters);
     EXPECT_LE(counters["x4_scan_steps"] - counters["x4_p4_tests"], 16 * r * r * r) << label(s);
     EXPECT_LE(counters["x4_lookup_steps"], r * r * r / 3) << label(s);
+    // What X sees: O(1) amortized per query and insert, O(r) per scan for the funnels (header, (7)).
+    EXPECT_LE(counters["x4_p4_tests"], r * r * r) << label(s);
+    EXPECT_LE(counters["x4_funnel_steps"], r * r * r) << label(s);
+    EXPECT_LE(counters["x4_funnel_points"], r * r * r) << label(s);
     tested += counters["x4_p4_tests"];
   }
   EXPECT_GT(tested, 0);

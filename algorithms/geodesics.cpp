@@ -1,0 +1,166 @@
+// Geodesic trees by the funnel walk; see geodesics.h.
+#include "algorithms/geodesics.h"
+
+#include <CGAL/FPU.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace pd {
+
+FilteredPoint::FilteredPoint(const QPoint& p) : exact(p), x(CGAL::to_interval(p.x())), y(CGAL::to_interval(p.y())) {}
+
+int orient(const FilteredPoint& a, const FilteredPoint& b, const FilteredPoint& c) {
+  {
+    CGAL::Protect_FPU_rounding<true> upwards;
+    const CGAL::Interval_nt<false> d = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    if (d.inf() > 0) return 1;
+    if (d.sup() < 0) return -1;
+  }
+  return orient(a.exact, b.exact, c.exact);
+}
+
+// beyond(i) for the edge F[i] F[i+1]: whether c lies past it, so that its path leaves the funnel at a
+// vertex after i (towards the right end); the tangent vertex is the first i where it does not. On the left chain (before the apex) c is past an edge when it
+// lies strictly left of it, on the right chain when it lies strictly right of it. On the edge's line,
+// c is reached from the edge's vertex nearer to it: the outer one when c lies beyond it (a root or a
+// terminal inside an edge, on the window itself, can also lie on the edge between the two). The
+// answers are true up to the tangent vertex and false from it on.
+std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size_t lo, std::size_t hi, std::size_t apex,
+                           const FilteredPoint& c, std::size_t guess, std::int64_t& steps) {
+  const auto reached_from = [&](std::size_t i) {  // not beyond(i)
+    ++steps;
+    const int side = orient(*F[i], *F[i + 1], c);
+    if (side != 0) return i < apex ? side <= 0 : side >= 0;
+    const bool between = CGAL::collinear_are_strictly_ordered_along_line(F[i]->exact, c.exact, F[i + 1]->exact);
+    return i < apex ? !between : between;
+  };
+  return first_holding(lo, hi, guess, reached_from);
+}
+
+GeodesicTrees::GeodesicTrees(const Polygon& p, const VisibilityGraph& triangulation, const std::vector<Terminal>& terminals)
+    : p_(p), triangulation_(triangulation), terminals_(terminals), terminals_on_edge_(p.size()),
+      trees_by_root_(terminals.size()), built_(terminals.size(), 0), kRoot(static_cast<std::uint32_t>(p.size())),
+      funnel_(2 * p.size() + 8, 0), funnel_points_(2 * p.size() + 8, nullptr) {
+  vertices_.reserve(p.size());
+  for (const Point& v : p.vertices()) vertices_.emplace_back(to_exact(v));
+  edge_points_.reserve(terminals.size());
+  for (std::size_t t = 0; t < terminals.size(); ++t) {
+    edge_points_.emplace_back(terminals[t].point);
+    if (!terminals[t].at_vertex) terminals_on_edge_[terminals[t].edge].push_back(static_cast<std::uint32_t>(t));
+  }
+}
+
+const FilteredPoint& GeodesicTrees::point(std::size_t terminal) const {
+  const Terminal& t = terminals_[terminal];
+  return t.at_vertex ? vertices_[t.edge] : edge_points_[terminal];
+}
+
+void GeodesicTrees::path(std::size_t from, std::size_t to, std::vector<const FilteredPoint*>& out) {
+  out.clear();
+  const FilteredPoint &start = point(from), &end = point(to);
+  out.push_back(&start);
+  if (&start == &end || start.exact == end.exact) return;
+  if (!built_[to]) build(to);
+  const Tree& tree = trees_by_root_[to];
+  const Terminal& source = terminals_[from];
+  const std::uint32_t root = terminals_[to].at_vertex ? static_cast<std::uint32_t>(terminals_[to].edge) : kRoot;
+  std::uint32_t id = source.at_vertex ? tree.vertex_parent[source.edge] : tree.terminal_parent[from];
+  while (id != root) {
+    if (id == kUnset) throw std::logic_error("geodesics: a terminal not reached by the walk");
+    out.push_back(&vertices_[id]);
+    id = tree.vertex_parent[id];
+  }
+  out.push_back(&end);
+}
+
+void GeodesicTrees::build(std::size_t root) {
+  ++trees_;
+  built_[root] = 1;
+  Tree& tree = trees_by_root_[root];
+  tree.vertex_parent.assign(p_.size(), kUnset);
+  tree.terminal_parent.assign(terminals_.size(), kUnset);
+  root_point_ = &point(root);
+  if (terminals_[root].at_vertex) start_at_vertex(terminals_[root].edge, tree);
+  else start_inside_edge(root, tree);
+}
+
+// From vertex v every neighbour in the triangulation, and every point of the two edges at v, is seen
+// directly; the walk starts at the window opposite v in each triangle of v's fan.
+void GeodesicTrees::start_at_vertex(std::size_t v, Tree& tree) {
+  const std::uint32_t self = static_cast<std::uint32_t>(v);
+  for (std::size_t edge : {v, p_.prev(v)})
+    for (std::uint32_t t : terminals_on_edge_[edge]) tree.terminal_parent[t] = self;
+  const std::uint32_t first = triangulation_.row_begin(v), last = triangulation_.row_end(v);
+  for (std::uint32_t h = first; h < last; ++h) tree.vertex_parent[triangulation_.head(h)] = self;
+  const std::size_t mid = p_.size() + 3;
+  for (std::uint32_t h = first; h + 1 < last; ++h) {
+    set(mid - 1, triangulation_.head(h + 1));
+    set(mid, self);
+    set(mid + 1, triangulation_.head(h));
+    walk({triangulation_.twin(h) - 1, mid - 1, mid + 1, mid, mid, self}, tree);
+  }
+}
+
+// A root inside edge (u, u+1) sees that edge and the triangle on it; the walk starts at that edge,
+// looking into the triangle: u on the left, u+1 on the right.
+void GeodesicTrees::start_inside_edge(std::size_t root, Tree& tree) {
+  const std::size_t u = terminals_[root].edge, w = p_.next(u);
+  for (std::uint32_t t : terminals_on_edge_[u]) tree.terminal_parent[t] = kRoot;
+  tree.vertex_parent[u] = tree.vertex_parent[w] = kRoot;
+  const std::size_t mid = p_.size() + 3;
+  set(mid - 1, static_cast<std::uint32_t>(u));
+  set(mid, kRoot);
+  set(mid + 1, static_cast<std::uint32_t>(w));
+  walk({triangulation_.twin(triangulation_.row_begin(u)), mid - 1, mid + 1, mid, mid, kRoot}, tree);
+}
+
+// Depth first over the dual tree. A window's triangle has its third vertex c just before the left end in
+// the right end's counter-clockwise row (VisibilityGraph::visible_from), unless the window is the polygon
+// edge right -> right + 1.
+void GeodesicTrees::walk(const Window& first, Tree& tree) {
+  struct Step {
+    Window window;
+    bool restore;  // restore F[window.write_at] to window.id once the subtree is done
+  };
+  std::vector<Step> stack{{first, false}};
+  while (!stack.empty()) {
+    const Step step = stack.back();
+    stack.pop_back();
+    const Window& w = step.window;
+    if (step.restore) {
+      set(w.write_at, w.id);
+      continue;
+    }
+    stack.push_back({{0, 0, 0, 0, w.write_at, funnel_[w.write_at]}, true});
+    set(w.write_at, w.id);
+    const std::uint32_t right = triangulation_.head(triangulation_.twin(w.slot));
+    if (w.slot == triangulation_.row_begin(right)) {
+      reach_edge(right, w, tree);
+      continue;
+    }
+    ++triangles_;
+    const std::uint32_t c = triangulation_.head(w.slot - 1);
+    const std::size_t k = tangent(w, vertices_[c]);
+    if (tree.vertex_parent[c] == kUnset) tree.vertex_parent[c] = funnel_[k];
+    stack.push_back({{w.slot - 1, k - 1, w.hi, std::max(w.apex, k), k - 1, c}, false});
+    stack.push_back({{triangulation_.twin(w.slot - 1) - 1, w.lo, k + 1, std::min(w.apex, k), k + 1, c}, false});
+  }
+}
+
+// The walk reaches polygon edge (edge, edge + 1) through window w: the parents of the terminals inside it.
+void GeodesicTrees::reach_edge(std::size_t edge, const Window& w, Tree& tree) {
+  for (std::uint32_t t : terminals_on_edge_[edge])
+    if (tree.terminal_parent[t] == kUnset) tree.terminal_parent[t] = funnel_[tangent(w, edge_points_[t])];
+}
+
+std::size_t GeodesicTrees::tangent(const Window& w, const FilteredPoint& c) {
+  return funnel_tangent(funnel_points_, w.lo, w.hi, w.apex, c, w.lo + (w.hi - w.lo) / 2, tangent_steps_);
+}
+
+void GeodesicTrees::set(std::size_t at, std::uint32_t id) {
+  funnel_[at] = id;
+  funnel_points_[at] = &point_of(id);
+}
+
+}  // namespace pd

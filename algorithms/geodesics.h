@@ -1,0 +1,157 @@
+// Geodesics (shortest paths inside a simple polygon) between points of its boundary, for chazelle-dobkin's
+// test of "XY lies in P" between two loose rays (algorithms/chazelle_dobkin_cubic.cpp, (7)).
+//
+// Method: the funnel walk of Lee and Preparata ("Euclidean shortest paths in the presence of
+// rectilinear barriers", Networks 14, 1984) and of Guibas, Hershberger, Leven, Sharir and Tarjan
+// ("Linear-time algorithms for visibility and shortest path problems inside triangulated simple
+// polygons", Algorithmica 2, 1987, Sec. 2), over the triangulation that VisibilityGraph already has.
+// From a root s, every triangle is entered once, through a window (a diagonal); the shortest paths
+// from s to the points of the window form a funnel: two concave chains from an apex to the window's
+// ends. The third vertex c of the triangle beyond is reached from the funnel vertex whose wedge holds
+// it (a binary search over the funnel: O(log n), O(log r) when only notches bend the chains), and
+// the funnel splits there into the funnels of the triangle's two other sides. The funnel lives in one
+// array, where a child changes one entry, restored when its subtree is done (a depth-first walk with
+// an explicit stack): O(n log n) per root, O(n) space. The tree keeps every vertex's parent (the
+// previous vertex on its geodesic) and that of every terminal inside an edge, found by the same
+// search in the funnel of the edge's triangle.
+//
+// Ties: a geodesic that passes straight through a vertex (collinear with the vertices before and after
+// it) lists that vertex, so a path lists every boundary point where it touches the boundary at a vertex
+// and its first point after a start in P is the first boundary point it meets.
+//
+// Exact: every decision is an orientation of three points, taken on intervals and, when they do not
+// settle it, on exact rationals (a root or a terminal may be a rational point inside an edge).
+#pragma once
+
+#include "algorithms/boundary_chains.h"
+#include "algorithms/visibility.h"
+#include "core/geometry.h"
+
+#include <CGAL/Interval_nt.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pd {
+
+// A point with interval coordinates alongside its exact ones.
+struct FilteredPoint {
+  explicit FilteredPoint(const QPoint& p);
+  QPoint exact;
+  CGAL::Interval_nt<false> x, y;
+};
+
+// orient() on the intervals when they settle the sign, else on the rationals.
+int orient(const FilteredPoint& a, const FilteredPoint& b, const FilteredPoint& c);
+
+// The first k in [lo, hi] where `holds` is true, for a predicate false before some index and true from
+// it on (and taken as true at hi): galloping from `guess` towards the answer, then bisecting, so
+// O(1 + log(1 + |k - guess|)) calls. Over a sequence of searches whose answers move one way, each from
+// the last answer, the calls add up to O(searches + hi - lo).
+template <class Holds>
+std::size_t first_holding(std::size_t lo, std::size_t hi, std::size_t guess, const Holds& holds) {
+  const auto at = [&](std::ptrdiff_t k) { return k >= static_cast<std::ptrdiff_t>(hi) || holds(static_cast<std::size_t>(k)); };
+  const std::ptrdiff_t first = static_cast<std::ptrdiff_t>(lo);
+  std::ptrdiff_t a, b;  // at(a) false (or a = first - 1), at(b) true
+  const std::ptrdiff_t g = static_cast<std::ptrdiff_t>(std::clamp(guess, lo, hi));
+  if (at(g)) {
+    b = g;
+    for (std::ptrdiff_t step = 1;; step *= 2) {
+      a = b - step;
+      if (a < first) {
+        a = first - 1;
+        break;
+      }
+      if (!at(a)) break;
+      b = a;
+    }
+  } else {
+    a = g;
+    for (std::ptrdiff_t step = 1;; step *= 2) {
+      b = a + step;
+      if (b >= static_cast<std::ptrdiff_t>(hi) || at(b)) {
+        b = std::min(b, static_cast<std::ptrdiff_t>(hi));
+        break;
+      }
+      a = b;
+    }
+  }
+  while (b - a > 1) {
+    const std::ptrdiff_t mid = a + (b - a) / 2;
+    if (at(mid)) b = mid;
+    else a = mid;
+  }
+  return static_cast<std::size_t>(b);
+}
+
+// A funnel: points F[lo..hi], from the left end of a window (F[lo]) through the apex F[apex] to its right
+// end (F[hi]), left and right as seen from the apex (the left end counter-clockwise from the right end);
+// the chains from the apex to the ends are the shortest paths to them. For a point c beyond the window or
+// on it, the index of the funnel vertex from which the shortest path reaches c in a straight line: the
+// last vertex of the path from the apex's root to c before c (of two on one line with c, the nearer).
+// Searched from `guess` (first_holding); adds the orientations taken to `steps`.
+std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size_t lo, std::size_t hi, std::size_t apex,
+                           const FilteredPoint& c, std::size_t guess, std::int64_t& steps);
+
+class GeodesicTrees {
+ public:
+  using Terminal = boundary::SegmentSearch::Contact;  // a vertex (at_vertex) or a point inside an edge
+
+  // Pre: p simple and counter-clockwise, `triangulation` built on it, every terminal on its boundary.
+  GeodesicTrees(const Polygon& p, const VisibilityGraph& triangulation, const std::vector<Terminal>& terminals);
+  GeodesicTrees(const GeodesicTrees&) = delete;
+  GeodesicTrees& operator=(const GeodesicTrees&) = delete;
+
+  // Replaces `out` with the geodesic from terminal `from` to terminal `to`: its first point, the vertices
+  // where it touches the boundary in order, and its last point (a single point when the two coincide).
+  // The tree rooted at `to` is built the first time it is needed, O(n log n); then O(length).
+  void path(std::size_t from, std::size_t to, std::vector<const FilteredPoint*>& out);
+  // The terminal's point; a terminal at a vertex shares the vertex's point object.
+  const FilteredPoint& point(std::size_t terminal) const;
+
+  std::int64_t trees() const { return trees_; }
+  std::int64_t triangles() const { return triangles_; }
+  std::int64_t tangent_steps() const { return tangent_steps_; }
+
+ private:
+  static constexpr std::uint32_t kUnset = UINT32_MAX;
+  // Parents are vertex ids, or kRoot for a root inside an edge.
+  struct Tree {
+    std::vector<std::uint32_t> vertex_parent, terminal_parent;
+  };
+  // One window of the walk: the half-edge right end -> left end (as seen from the root) and the funnel
+  // F[lo..hi] with its apex; entering it first sets F[write_at] (a new end) to `id`.
+  struct Window {
+    std::uint32_t slot;
+    std::size_t lo, hi, apex, write_at;
+    std::uint32_t id;
+  };
+
+  void build(std::size_t root);
+  void start_at_vertex(std::size_t v, Tree& tree);
+  void start_inside_edge(std::size_t root, Tree& tree);
+  void walk(const Window& first, Tree& tree);
+  void reach_edge(std::size_t edge, const Window& w, Tree& tree);
+  std::size_t tangent(const Window& w, const FilteredPoint& c);
+  // Sets funnel entry `at` to the vertex or root `id`.
+  void set(std::size_t at, std::uint32_t id);
+  const FilteredPoint& point_of(std::uint32_t id) const { return id == kRoot ? *root_point_ : vertices_[id]; }
+
+  const Polygon& p_;
+  const VisibilityGraph& triangulation_;
+  std::vector<Terminal> terminals_;
+  std::vector<FilteredPoint> vertices_, edge_points_;  // edge_points_: per terminal, used inside edges
+  std::vector<std::vector<std::uint32_t>> terminals_on_edge_;  // per edge, its terminals inside it
+  std::vector<Tree> trees_by_root_;
+  std::vector<char> built_;
+  const std::uint32_t kRoot;
+  // The walk's funnel (ids), its entries as points for funnel_tangent, and the root being walked.
+  std::vector<std::uint32_t> funnel_;
+  std::vector<const FilteredPoint*> funnel_points_;
+  const FilteredPoint* root_point_ = nullptr;
+  std::int64_t trees_ = 0, triangles_ = 0, tangent_steps_ = 0;
+};
+
+}  // namespace pd
