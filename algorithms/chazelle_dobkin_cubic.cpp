@@ -159,7 +159,7 @@
 // at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
 // O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for r < 32768), O(r^3)
 // over the O(r^2) intervals, with as many more steps as the geodesics pass vertices of 180 degrees;
-// chosen()'s checks O(r^3 log(n/r)). Worst case O(n r log n + r^3 log(n/r)). Space O(n r) for the
+// chosen()'s checks O(r^3 log(n/r)). Worst case O(n r log n + r^3 + r^3 log(n/r)). Space O(n r) for the
 // trees, O(r^3) for the rows (a row per interval with a witness) and O(r^2) rationals for the lists
 // and loose points. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an
 // optimal convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points
@@ -190,7 +190,7 @@ Decomposition chazelle_dobkin(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*r*log(n)+r^3*log(n/r)", "== OPT",
+REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*r*log(n)+r^3+r^3*log(n/r)", "== OPT",
                              "Chazelle thesis (000) Sec. 2.4, Def. 2.4, Thm 18, Lemma 9", 20000, chazelle_dobkin});
 
 }  // namespace pd
