@@ -8,9 +8,13 @@
 
 namespace pd {
 
-FilteredPoint::FilteredPoint(const QPoint& p) : exact(p), x(CGAL::to_interval(p.x())), y(CGAL::to_interval(p.y())) {}
+FilteredPoint::FilteredPoint(const QPoint& p)
+    : exact(p), x(CGAL::to_interval(p.x())), y(CGAL::to_interval(p.y())),
+      in_doubles(x.inf() == x.sup() && y.inf() == y.sup()) {}
 
 int orient(const FilteredPoint& a, const FilteredPoint& b, const FilteredPoint& c) {
+  if (a.in_doubles && b.in_doubles && c.in_doubles)
+    return orient(Point(a.x.inf(), a.y.inf()), Point(b.x.inf(), b.y.inf()), Point(c.x.inf(), c.y.inf()));
   {
     CGAL::Protect_FPU_rounding<true> upwards;
     const CGAL::Interval_nt<false> d = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
@@ -48,6 +52,49 @@ GeodesicTrees::GeodesicTrees(const Polygon& p, const VisibilityGraph& triangulat
   for (std::size_t t = 0; t < terminals.size(); ++t) {
     edge_points_.emplace_back(terminals[t].point);
     if (!terminals[t].at_vertex) terminals_on_edge_[terminals[t].edge].push_back(static_cast<std::uint32_t>(t));
+  }
+  mark_windows_towards_terminals();
+}
+
+// Triangles are numbered by a slot with the triangle on its left (a -> b, third vertex next after b
+// around a); the triangle on the right of slot s is the one on the left of twin(s). A depth-first walk
+// over the dual tree from triangle 0 counts the terminals in each subtree; beyond a slot lies the
+// subtree of the triangle on its right, or all but the subtree of the triangle on its left.
+void GeodesicTrees::mark_windows_towards_terminals() {
+  const std::uint32_t slots = triangulation_.row_end(p_.size() - 1);
+  std::vector<std::uint32_t> left_of(slots, kUnset), owner(slots, 0);
+  std::uint32_t count = 0;
+  for (std::uint32_t a = 0; a < p_.size(); ++a)
+    for (std::uint32_t h = triangulation_.row_begin(a); h + 1 < triangulation_.row_end(a); ++h) {
+      if (left_of[h] != kUnset) continue;
+      const std::uint32_t b_to_c = triangulation_.twin(h) - 1, c_to_a = triangulation_.twin(b_to_c) - 1;
+      for (std::uint32_t s : {h, b_to_c, c_to_a}) left_of[s] = count;
+      owner[count++] = h;
+    }
+  std::vector<std::uint32_t> weight(count, 0), parent(count, kUnset), order;
+  for (const Terminal& t : terminals_) weight[left_of[triangulation_.row_begin(t.edge)]] += 1;
+  std::vector<std::uint32_t> pending{0};
+  parent[0] = 0;
+  while (!pending.empty()) {
+    const std::uint32_t t = pending.back();
+    pending.pop_back();
+    order.push_back(t);
+    for (std::uint32_t s : {owner[t], triangulation_.twin(owner[t]) - 1, triangulation_.twin(triangulation_.twin(owner[t]) - 1) - 1}) {
+      const std::uint32_t across = left_of[triangulation_.twin(s)];
+      if (across != kUnset && parent[across] == kUnset) parent[across] = t, pending.push_back(across);
+    }
+  }
+  std::vector<std::uint32_t> below(weight);
+  for (std::size_t k = order.size(); k-- > 1;) below[parent[order[k]]] += below[order[k]];
+  towards_terminal_.assign(slots, 0);
+  for (std::uint32_t s = 0; s < slots; ++s) {
+    const std::uint32_t here = left_of[s], there = left_of[triangulation_.twin(s)];
+    if (there == kUnset)  // s is polygon edge a -> a + 1, the outside beyond it
+      towards_terminal_[s] = !terminals_on_edge_[triangulation_.head(triangulation_.twin(s))].empty();
+    else if (here == kUnset)  // s is a polygon edge backwards, the whole triangulation beyond it
+      towards_terminal_[s] = below[0] > 0;
+    else
+      towards_terminal_[s] = (parent[there] == here ? below[there] : below[0] - below[here]) > 0;
   }
 }
 
@@ -93,12 +140,13 @@ void GeodesicTrees::start_at_vertex(std::size_t v, Tree& tree) {
     for (std::uint32_t t : terminals_on_edge_[edge]) tree.terminal_parent[t] = self;
   const std::uint32_t first = triangulation_.row_begin(v), last = triangulation_.row_end(v);
   for (std::uint32_t h = first; h < last; ++h) tree.vertex_parent[triangulation_.head(h)] = self;
-  const std::size_t mid = p_.size() + 3;
+  const std::uint32_t mid = static_cast<std::uint32_t>(p_.size() + 3);
   for (std::uint32_t h = first; h + 1 < last; ++h) {
     set(mid - 1, triangulation_.head(h + 1));
     set(mid, self);
     set(mid + 1, triangulation_.head(h));
-    walk({triangulation_.twin(h) - 1, mid - 1, mid + 1, mid, mid, self}, tree);
+    const std::uint32_t opposite = triangulation_.twin(h) - 1;
+    if (towards_terminal_[opposite]) walk({opposite, mid - 1, mid + 1, mid, mid, self}, tree);
   }
 }
 
@@ -108,31 +156,27 @@ void GeodesicTrees::start_inside_edge(std::size_t root, Tree& tree) {
   const std::size_t u = terminals_[root].edge, w = p_.next(u);
   for (std::uint32_t t : terminals_on_edge_[u]) tree.terminal_parent[t] = kRoot;
   tree.vertex_parent[u] = tree.vertex_parent[w] = kRoot;
-  const std::size_t mid = p_.size() + 3;
+  const std::uint32_t mid = static_cast<std::uint32_t>(p_.size() + 3);
   set(mid - 1, static_cast<std::uint32_t>(u));
   set(mid, kRoot);
   set(mid + 1, static_cast<std::uint32_t>(w));
-  walk({triangulation_.twin(triangulation_.row_begin(u)), mid - 1, mid + 1, mid, mid, kRoot}, tree);
+  const std::uint32_t into_triangle = triangulation_.twin(triangulation_.row_begin(u));
+  if (towards_terminal_[into_triangle]) walk({into_triangle, mid - 1, mid + 1, mid, mid, kRoot}, tree);
 }
 
 // Depth first over the dual tree. A window's triangle has its third vertex c just before the left end in
 // the right end's counter-clockwise row (VisibilityGraph::visible_from), unless the window is the polygon
 // edge right -> right + 1.
 void GeodesicTrees::walk(const Window& first, Tree& tree) {
-  struct Step {
-    Window window;
-    bool restore;  // restore F[window.write_at] to window.id once the subtree is done
-  };
-  std::vector<Step> stack{{first, false}};
-  while (!stack.empty()) {
-    const Step step = stack.back();
-    stack.pop_back();
-    const Window& w = step.window;
-    if (step.restore) {
+  stack_.assign(1, first);
+  while (!stack_.empty()) {
+    const Window w = stack_.back();
+    stack_.pop_back();
+    if (w.slot == kRestore) {
       set(w.write_at, w.id);
       continue;
     }
-    stack.push_back({{0, 0, 0, 0, w.write_at, funnel_[w.write_at]}, true});
+    stack_.push_back({kRestore, 0, 0, 0, w.write_at, funnel_[w.write_at]});
     set(w.write_at, w.id);
     const std::uint32_t right = triangulation_.head(triangulation_.twin(w.slot));
     if (w.slot == triangulation_.row_begin(right)) {
@@ -141,10 +185,11 @@ void GeodesicTrees::walk(const Window& first, Tree& tree) {
     }
     ++triangles_;
     const std::uint32_t c = triangulation_.head(w.slot - 1);
-    const std::size_t k = tangent(w, vertices_[c]);
+    const std::uint32_t k = static_cast<std::uint32_t>(tangent(w, vertices_[c]));
     if (tree.vertex_parent[c] == kUnset) tree.vertex_parent[c] = funnel_[k];
-    stack.push_back({{w.slot - 1, k - 1, w.hi, std::max(w.apex, k), k - 1, c}, false});
-    stack.push_back({{triangulation_.twin(w.slot - 1) - 1, w.lo, k + 1, std::min(w.apex, k), k + 1, c}, false});
+    const std::uint32_t towards_right = w.slot - 1, towards_left = triangulation_.twin(w.slot - 1) - 1;
+    if (towards_terminal_[towards_right]) stack_.push_back({towards_right, k - 1, w.hi, std::max(w.apex, k), k - 1, c});
+    if (towards_terminal_[towards_left]) stack_.push_back({towards_left, w.lo, k + 1, std::min(w.apex, k), k + 1, c});
   }
 }
 

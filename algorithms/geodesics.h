@@ -11,9 +11,11 @@
 // it (a binary search over the funnel: O(log n), O(log r) when only notches bend the chains), and
 // the funnel splits there into the funnels of the triangle's two other sides. The funnel lives in one
 // array, where a child changes one entry, restored when its subtree is done (a depth-first walk with
-// an explicit stack): O(n log n) per root, O(n) space. The tree keeps every vertex's parent (the
-// previous vertex on its geodesic) and that of every terminal inside an edge, found by the same
-// search in the funnel of the edge's triangle.
+// an explicit stack): O(n log n) per root, O(n) space. The tree keeps the parent (the previous vertex on
+// the geodesic) of every vertex of the triangles it enters, and that of every terminal inside an edge,
+// found by the same search in the funnel of the edge's triangle. The walk enters a window only when a
+// terminal lies beyond it (counted once for all roots over the dual tree, O(n)): the geodesics to the
+// terminals cross only the triangles between, and every vertex of those gets its parent.
 //
 // Ties: a geodesic that passes straight through a vertex (collinear with the vertices before and after
 // it) lists that vertex, so a path lists every boundary point where it touches the boundary at a vertex
@@ -36,14 +38,17 @@
 
 namespace pd {
 
-// A point with interval coordinates alongside its exact ones.
+// A point with interval coordinates alongside its exact ones, and whether both are doubles (as the
+// polygon's vertices are).
 struct FilteredPoint {
   explicit FilteredPoint(const QPoint& p);
   QPoint exact;
   CGAL::Interval_nt<false> x, y;
+  bool in_doubles;
 };
 
-// orient() on the intervals when they settle the sign, else on the rationals.
+// orient() on the doubles when all three points are in doubles (CGAL's filtered predicate), else on the
+// intervals when they settle the sign, else on the rationals.
 int orient(const FilteredPoint& a, const FilteredPoint& b, const FilteredPoint& c);
 
 // The first k in [lo, hi] where `holds` is true, for a predicate false before some index and true from
@@ -122,13 +127,15 @@ class GeodesicTrees {
     std::vector<std::uint32_t> vertex_parent, terminal_parent;
   };
   // One window of the walk: the half-edge right end -> left end (as seen from the root) and the funnel
-  // F[lo..hi] with its apex; entering it first sets F[write_at] (a new end) to `id`.
+  // F[lo..hi] with its apex; entering it first sets F[write_at] (a new end) to `id`. A window whose slot
+  // is kRestore only sets F[write_at] back to `id`, once the subtree of the window that changed it is
+  // done.
   struct Window {
-    std::uint32_t slot;
-    std::size_t lo, hi, apex, write_at;
-    std::uint32_t id;
+    std::uint32_t slot, lo, hi, apex, write_at, id;
   };
+  static constexpr std::uint32_t kRestore = UINT32_MAX;
 
+  void mark_windows_towards_terminals();
   void build(std::size_t root);
   void start_at_vertex(std::size_t v, Tree& tree);
   void start_inside_edge(std::size_t root, Tree& tree);
@@ -144,12 +151,16 @@ class GeodesicTrees {
   std::vector<Terminal> terminals_;
   std::vector<FilteredPoint> vertices_, edge_points_;  // edge_points_: per terminal, used inside edges
   std::vector<std::vector<std::uint32_t>> terminals_on_edge_;  // per edge, its terminals inside it
+  // Per half-edge slot, whether a terminal (a vertex, counted in the triangle on its forward edge, or
+  // a point inside an edge) lies in the part of the triangulation beyond it, on its right.
+  std::vector<char> towards_terminal_;
   std::vector<Tree> trees_by_root_;
   std::vector<char> built_;
   const std::uint32_t kRoot;
   // The walk's funnel (ids), its entries as points for funnel_tangent, and the root being walked.
   std::vector<std::uint32_t> funnel_;
   std::vector<const FilteredPoint*> funnel_points_;
+  std::vector<Window> stack_;
   const FilteredPoint* root_point_ = nullptr;
   std::int64_t trees_ = 0, triangles_ = 0, tangent_steps_ = 0;
 };
