@@ -356,8 +356,9 @@ class ProgramCubic final : public Program {
     std::vector<int> place;       // by_at inverted: the place of each insert
     std::vector<int> below_rank;  // below_rank[v]: the places whose Y has a rank along H below v
     // kGeodesics: per end of H (0 its notch, 1 its far end), the funnel of the geodesics from G's ends
-    // to it; per query the places its X sees, [lo, hi) (header, (7)), once a pass has needed them; and
-    // where the last query's searches ended, in the funnels and along H.
+    // to it, once a query has needed them; per query the places its X sees, [lo, hi) (header, (7)),
+    // once a pass has needed them; and where the last query's searches ended, in the funnels and along
+    // H.
     std::array<Funnel, 2> funnels;
     std::vector<std::array<int, 2>> seen;
     std::array<std::size_t, 2> met_guess{0, 0}, place_guess{0, 0};
@@ -480,10 +481,7 @@ class ProgramCubic final : public Program {
         stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).along + 1); });
     for (int k = 0; k < size; ++k) lists.place[static_cast<std::size_t>(lists.by_at[static_cast<std::size_t>(k)])] = k;
     if (!rays_.loose(G, H)) scans_sharing_an_end_ += rays_.share_an_end(G, H);
-    if (walks_ == Walks::kGeodesics) {
-      for (int end : {0, 1}) lists.funnels[static_cast<std::size_t>(end)] = funnel(G, LooseRays::terminal(H, end));
-      lists.seen.assign(queries.size(), {-1, -1});
-    }
+    if (walks_ == Walks::kGeodesics) lists.seen.assign(queries.size(), {-1, -1});
     sweep_forward(queries, lists, along_g, row);
     sweep_backward(queries, lists, along_g, row);
     PlaceSet parallel(size);
@@ -647,6 +645,8 @@ class ProgramCubic final : public Program {
     std::array<int, 2>& seen = lists.seen[static_cast<std::size_t>(query.index)];
     if (seen[0] >= 0) return seen;
     seen = {0, 0};
+    if (lists.funnels[0].points.empty())
+      for (int end : {0, 1}) lists.funnels[static_cast<std::size_t>(end)] = funnel(lists.G, LooseRays::terminal(lists.H, end));
     const FilteredPoint& x = rays_.loose_point(lists.G, query.ray);
     Sight sight;
     for (std::size_t end : {0, 1}) sight.first_met[end] = &first_point_met(lists.funnels[end], x, lists.met_guess[end]);
