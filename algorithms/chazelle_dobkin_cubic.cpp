@@ -97,27 +97,28 @@
 // (7) How X sees H, from geodesics (not in the OCR text; the facts are standard: Lee and Preparata,
 //     Networks 14, 1984; Guibas, Hershberger, Leven, Sharir and Tarjan, Algorithmica 2, 1987, where a
 //     point's visibility polygon is read off its tree of shortest paths; algorithms/geodesics.h).
-//     F1: the geodesic (shortest path in P) between two points is unique and bends only at notches; a
-//     geodesic that passes straight through a vertex lists it, so its first point after a start in
-//     int P is the first point of the boundary it meets. F3: for a segment K in P and a point e, the
+//     F1: the geodesic (shortest path in P) between two points is unique and turns only at notches;
+//     the trees list a geodesic's turns and ends only. F3: for a segment K in P and a point e, the
 //     geodesics from K's two ends to e meet at an apex and form a funnel; the geodesic from X on K to
 //     e leaves X towards the funnel vertex f_e(X) from which it goes straight to X, and f_e(X) moves
 //     monotonically over the funnel as X moves along K (geodesics to one point do not cross). F4: for
 //     X off the line of H, X sees exactly the points of the open H strictly inside the angle between
-//     the rays from X through f1 = f_{z_h}(X) and f2 = f_{w_H}(X), the first points of the boundary on
-//     the geodesics from X to H's notch and to its far end; the angle is below 180 degrees, and empty
-//     (X, f1 and f2 on one line) when X sees no point of H. ("Strictly": a segment XY that touches
-//     the boundary touches a vertex, which then lies on one of the two rays.)
+//     the rays from X through f1 = f_{z_h}(X) and f2 = f_{w_H}(X), the rays along which the geodesics
+//     from X to H's notch and to its far end leave X; each holds the first point of the boundary its
+//     geodesic meets. The angle is below 180 degrees, and empty (X, f1 and f2 on one line) when X sees
+//     no point of H. ("Strictly": a segment XY that touches the boundary touches a vertex, which then
+//     lies on one of the two rays.)
 //     So a scan takes the two funnels of G's ends to H's ends from the trees of geodesics rooted at
 //     H's ends (each built the first time a scan needs it, O(n log n), at most 3r of them), and each
 //     query its f1 and f2 by a search in each funnel and its range [lo, hi) by two searches along H.
-//     A place is tested by three orientations, which tell where its Y lies: before the ray through f1
-//     (towards H's notch), after the ray through f2 (towards the far end), or seen. A query's range
+//     A place is tested by at most two orientations (a query adds one, for the angle), which tell where
+//     its Y lies: before the ray through f1 (towards H's notch), after the ray through f2 (towards the
+//     far end), or seen. A query's range
 //     is computed once, the first time a pass asks for it, and each search gallops from where the
 //     last one ended: by F3 and M the answers move one way along the queries a pass asks for, and by
 //     R the queries off the run sit at its two ends (a pass that follows one in the other direction,
 //     or a query off the run, costs one jump of O(log r)). A scan therefore costs O(queries + inserts
-//     + funnel vertices) orientations, O(r) when no vertex of 180 degrees lies on the geodesics. Which
+//     + geodesic vertices) orientations, O(r). Which
 //     places a query sees rests on F4 alone; the cost on F3, M and R. The test
 //     GeodesicsFindTheWitnessesOfWalksAlone holds every row to walks that test each Y in turn with a
 //     segment search, and Geodesics.ShortestPathsOfTheBruteForce the trees to a brute force.
@@ -140,9 +141,9 @@
 // EveryTipX4HasALooseX4OnTheSameNotches checks the strong form on samples.
 // Deviations.
 // - The thesis's text stops before saying how its scans test P4; its "O(N) per interval after O(N^3)
-//   preprocessing" suggests a table of what each loose point sees of each ray. The funnels of (7)
-//   compute those entries as the scans need them and store none; the geodesic trees cost O(n r log n)
-//   where the thesis's preprocessing is O(n + r^2 log n). chosen()'s full check still tests P4 as a
+//   preprocessing" (for the X4 term) suggests a table of what each loose point sees of each ray. The
+//   funnels of (7) compute those entries as the scans need them and store none, but their geodesic
+//   trees cost O(n r log n), where Algorithm CD's preprocessing of the polygon is O(n + r^2 log n). chosen()'s full check still tests P4 as a
 //   segment search on the boundary's convex chains (algorithms/boundary_chains.h), O(r log(n/r)) per
 //   test, for O(r^2) chosen patterns. Measured (seed 1; "x4_p4_tests" / "x4_funnel_steps", user
 //   seconds; in brackets the walks with segment searches that (7) replaced: their tests, seconds):
@@ -158,8 +159,7 @@
 // Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists, O(n log n) for each of
 // at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
 // O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for r < 32768), O(r^3)
-// over the O(r^2) intervals, with as many more steps as the geodesics pass vertices of 180 degrees;
-// chosen()'s checks O(r^3 log(n/r)). Worst case O(n r log n + r^3 + r^3 log(n/r)). Space O(n r) for the
+// over the O(r^2) intervals; chosen()'s checks O(r^3 log(n/r)). Worst case O(n r log n + r^3 + r^3 log(n/r)). Space O(n r) for the
 // trees, O(r^3) for the rows (a row per interval with a witness) and O(r^2) rationals for the lists
 // and loose points. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an
 // optimal convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points

@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdlib>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -76,13 +75,6 @@ class LooseRays {
     std::optional<FilteredPoint>& made = made_[static_cast<std::size_t>(made_at_[cell(a, b)])];
     if (!made) made.emplace(point(a, b));
     return *made;
-  }
-  // Where ray a's clipped segment starts (its notch) and ends on the boundary.
-  const Place& start(int a) const { return start_[a]; }
-  const Place& end(int a) const { return end_[a]; }
-  // Which side of the directed line of ray a point y lies on: +1 left, -1 right, 0 on it.
-  int line_side(int a, const QPoint& y) const {
-    return CGAL::sign(CGAL::determinant(direction_[a], y - origin_[a]));
   }
   // Whether boundary place a comes before b in the order of the boundary from vertex 0 on.
   bool before(const Place& a, const Place& b) const {
@@ -222,15 +214,14 @@ struct Witness {
 
 class ProgramCubic final : public Program {
  public:
-  // How a scan finds each query's witness: from the places X sees, found with geodesics (the
-  // algorithm), or by a walk testing every step in turn with the segment search until one passes (the
-  // reference the tests hold the rows of the first against: both must find the same witness for every
-  // entry).
-  enum class Walks { kGeodesics, kEachAlone };
+  // How a scan tests P4 (XY in P): from the places X sees, found with geodesics (the algorithm), or by a
+  // walk testing every step in turn with the segment search until one passes (the reference the tests
+  // hold the rows of the first against: both must find the same witness for every entry).
+  enum class P4Test { kGeodesics, kSegmentSearch };
 
-  explicit ProgramCubic(const Polygon& p, Walks walks = Walks::kGeodesics)
+  explicit ProgramCubic(const Polygon& p, P4Test p4_test = P4Test::kGeodesics)
       : Program(p), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
-        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)), walks_(walks),
+        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)), p4_test_(p4_test),
         geodesics_(p, patterns().triangulation(), rays_.terminals()) {}
 
   void report(Counters& counters) const {
@@ -337,9 +328,10 @@ class ProgramCubic final : public Program {
 
   // The funnel of the geodesics from G's two ends to a point e (header, (7)): from the end of G on its
   // left, seen from the apex (where the two geodesics meet), to the end on its right. For X on the open
-  // G, the geodesic from X to e runs straight to a funnel vertex (funnel_tangent), the first point of
-  // the boundary it meets, and on along the funnel. When the apex is an end of G the geodesic from the
-  // other end runs along G through it, and so does that of every X: the funnel is that end alone.
+  // G, the geodesic from X to e runs straight to a funnel vertex (funnel_tangent), on the ray that holds
+  // the first point of the boundary it meets, and on along the funnel. When the apex is an end of G the
+  // geodesic from the other end runs along G through it, and so does that of every X: the funnel is that
+  // end alone.
   struct Funnel {
     std::vector<const FilteredPoint*> points;
     std::size_t apex = 0;
@@ -481,7 +473,7 @@ class ProgramCubic final : public Program {
         stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).along + 1); });
     for (int k = 0; k < size; ++k) lists.place[static_cast<std::size_t>(lists.by_at[static_cast<std::size_t>(k)])] = k;
     if (!rays_.loose(G, H)) scans_sharing_an_end_ += rays_.share_an_end(G, H);
-    if (walks_ == Walks::kGeodesics) lists.seen.assign(queries.size(), {-1, -1});
+    if (p4_test_ == P4Test::kGeodesics) lists.seen.assign(queries.size(), {-1, -1});
     sweep_forward(queries, lists, along_g, row);
     sweep_backward(queries, lists, along_g, row);
     PlaceSet parallel(size);
@@ -599,7 +591,7 @@ class ProgramCubic final : public Program {
 
   // The witness of a query among the places inserted in a pass, if any: the first inserted step of its
   // walk where P1 holds and X sees Y. kGeodesics reads it from the places X sees (one lookup);
-  // kEachAlone tests the steps in turn.
+  // kSegmentSearch tests the steps in turn.
   void find_visible(const Query& query, Lists& lists, const PlaceSet& inserted, Row& row) {
     const int q = LooseRays::notch(query.ray);
     if (inserted.empty() || has_witness(row, q)) return;
@@ -607,7 +599,7 @@ class ProgramCubic final : public Program {
     const int size = static_cast<int>(lists.inserts.size()), end = p1_end(query, lists);
     const Walk walk(inserted, size, down);
     int found = -1;
-    if (walks_ == Walks::kEachAlone) {
+    if (p4_test_ == P4Test::kSegmentSearch) {
       const QPoint& x = rays_.loose_point(lists.G, query.ray).exact;
       for (int step = walk.first_from(0); step < end && found < 0; step = walk.first_from(step + 1)) {
         ++scan_steps_;
@@ -629,28 +621,23 @@ class ProgramCubic final : public Program {
   // end (header, (7)).
   enum class View { kSeen, kTowardsNotch, kTowardsFarEnd };
 
-  // What X on G sees of H (header, (7)): f1 and f2, the first points of the boundary on the geodesics
-  // from X to H's notch and to its far end, and the orientation of X, f1, f2, 0 when X sees no point of
-  // H.
+  // What X on G sees of H (header, (7)): f1 and f2, the first turns (or ends) of the geodesics from X to
+  // H's notch and to its far end, and the orientation of X, f1, f2, 0 when X sees no point of H.
   struct Sight {
     std::array<const FilteredPoint*, 2> first_met{};
     int angle = 0;
   };
 
   // The places X sees, [lo, hi) in by_at order (header, (7)). Each search starts where the last
-  // query's ended: along a pass the queries come in order along G, the first points met move
-  // monotonically over the funnels (F3), and the ends of what X sees along H monotonically too (M), so
-  // a scan costs O(queries + inserts + funnels) orientations.
+  // query's ended: along a pass the queries come in order along G, f1 and f2 move monotonically over
+  // the funnels (F3), and the ends of what X sees along H monotonically too (M), so a scan costs
+  // O(queries + inserts + funnels) orientations.
   std::array<int, 2> seen_places(const Query& query, Lists& lists) {
     std::array<int, 2>& seen = lists.seen[static_cast<std::size_t>(query.index)];
     if (seen[0] >= 0) return seen;
     seen = {0, 0};
-    if (lists.funnels[0].points.empty())
-      for (int end : {0, 1}) lists.funnels[static_cast<std::size_t>(end)] = funnel(lists.G, LooseRays::terminal(lists.H, end));
     const FilteredPoint& x = rays_.loose_point(lists.G, query.ray);
-    Sight sight;
-    for (std::size_t end : {0, 1}) sight.first_met[end] = &first_point_met(lists.funnels[end], x, lists.met_guess[end]);
-    sight.angle = orient(x, *sight.first_met[0], *sight.first_met[1]);
+    const Sight sight = sight_of(x, lists);
     if (sight.angle == 0) return seen;
     const auto view = [&](std::size_t place) {
       ++scan_steps_;
@@ -665,31 +652,55 @@ class ProgramCubic final : public Program {
     return seen;
   }
 
-  // The funnel of the geodesics from G's ends to terminal e: O(their length), O(r) when no vertex of 180
-  // degrees lies on them (a geodesic bends at notches only).
+  // f1, f2 and their angle for X, the scan's funnels built when its first query needs them.
+  Sight sight_of(const FilteredPoint& x, Lists& lists) {
+    if (lists.funnels[0].points.empty())
+      for (int end : {0, 1}) lists.funnels[static_cast<std::size_t>(end)] = funnel(lists.G, LooseRays::terminal(lists.H, end));
+    Sight sight;
+    for (std::size_t end : {0, 1}) sight.first_met[end] = &first_point_met(lists.funnels[end], x, lists.met_guess[end]);
+    sight.angle = orient(x, *sight.first_met[0], *sight.first_met[1]);
+    return sight;
+  }
+
+  // The funnel of the geodesics from G's ends to terminal e: O(r), their length (they list their turns,
+  // at notches, and their ends).
   Funnel funnel(int G, std::size_t e) {
     geodesics_.path(LooseRays::terminal(G, 0), e, from_notch_);
     geodesics_.path(LooseRays::terminal(G, 1), e, from_far_end_);
-    std::size_t a = from_notch_.size(), b = from_far_end_.size();
-    while (a > 0 && b > 0 && from_notch_[a - 1] == from_far_end_[b - 1]) --a, --b;
-    Funnel f;
-    if (a == 0 || b == 0) {
-      f.points.push_back(a == 0 ? from_notch_[0] : from_far_end_[0]);
-      return f;
+    const std::vector<const FilteredPoint*>&A = from_notch_, &B = from_far_end_;
+    std::size_t a = A.size(), b = B.size();
+    while (a > 0 && b > 0 && A[a - 1] == B[b - 1]) --a, --b;
+    if (a == A.size()) throw std::logic_error("chazelle-dobkin: two geodesics to one point end apart");
+    // A[0, a) and B[0, b) come before the apex, where the two geodesics meet.
+    const FilteredPoint* apex = A[a];
+    int turn = 0;
+    while (a > 0 && b > 0 && (turn = orient(*apex, *B[b - 1], *A[a - 1])) == 0) {
+      // The geodesics list only their turns: the one passes straight through the point that the other
+      // lists last before the apex, which the two therefore share.
+      if (CGAL::collinear_are_strictly_ordered_along_line(apex->exact, A[a - 1]->exact, B[b - 1]->exact))
+        apex = A[--a];
+      else if (CGAL::collinear_are_strictly_ordered_along_line(apex->exact, B[b - 1]->exact, A[a - 1]->exact))
+        apex = B[--b];
+      else
+        throw std::logic_error("chazelle-dobkin: a funnel of geodesics with no angle at its apex");
     }
-    const int turn = orient(*from_notch_[a], *from_far_end_[b - 1], *from_notch_[a - 1]);
-    if (turn == 0) throw std::logic_error("chazelle-dobkin: a funnel of geodesics with no angle at its apex");
-    const std::vector<const FilteredPoint*>& left = turn > 0 ? from_notch_ : from_far_end_;
-    const std::vector<const FilteredPoint*>& right = turn > 0 ? from_far_end_ : from_notch_;
-    f.apex = turn > 0 ? a : b;
-    f.points.assign(left.begin(), left.begin() + static_cast<std::ptrdiff_t>(f.apex) + 1);
-    for (std::size_t k = turn > 0 ? b : a; k-- > 0;) f.points.push_back(right[k]);
+    Funnel f;
+    if (a > 0 && b > 0) {
+      const std::vector<const FilteredPoint*>& left = turn > 0 ? A : B;
+      f.points.assign(left.begin(), left.begin() + static_cast<std::ptrdiff_t>(turn > 0 ? a : b));
+    }
+    f.apex = f.points.size();
+    f.points.push_back(apex);
+    if (a > 0 && b > 0) {
+      const std::vector<const FilteredPoint*>& right = turn > 0 ? B : A;
+      for (std::size_t k = turn > 0 ? b : a; k-- > 0;) f.points.push_back(right[k]);
+    }
     funnel_points_ += static_cast<std::int64_t>(f.points.size());
     return f;
   }
 
-  // The first point of the boundary on the geodesic from X (on the open G) to the funnel's e (F3),
-  // searched from `guess`, which becomes its index.
+  // The first turn (or end) of the geodesic from X (on the open G) to the funnel's e (F3), searched from
+  // `guess`, which becomes its index.
   const FilteredPoint& first_point_met(const Funnel& f, const FilteredPoint& x, std::size_t& guess) {
     if (f.points.size() > 1) guess = funnel_tangent(f.points, 0, f.points.size() - 1, f.apex, x, guess, funnel_steps_);
     return *f.points[f.points.size() > 1 ? guess : 0];
@@ -715,7 +726,7 @@ class ProgramCubic final : public Program {
   int notch_count_;
   LooseRays rays_;
   std::vector<Row> rows_;  // at(g, h): the row of interval (g, h), empty when it has no witness
-  Walks walks_;
+  P4Test p4_test_;
   GeodesicTrees geodesics_;
   std::vector<const FilteredPoint*> from_notch_, from_far_end_;  // the geodesics of funnel(), reused
   std::int64_t scans_sharing_an_end_ = 0, funnel_points_ = 0, funnel_steps_ = 0;

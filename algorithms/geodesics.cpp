@@ -24,15 +24,15 @@ int orient(const FilteredPoint& a, const FilteredPoint& b, const FilteredPoint& 
   return orient(a.exact, b.exact, c.exact);
 }
 
-// beyond(i) for the edge F[i] F[i+1]: whether c lies past it, so that its path leaves the funnel at a
-// vertex after i (towards the right end); the tangent vertex is the first i where it does not. On the left chain (before the apex) c is past an edge when it
-// lies strictly left of it, on the right chain when it lies strictly right of it. On the edge's line,
-// c is reached from the edge's vertex nearer to it: the outer one when c lies beyond it (a root or a
+// reached_from(i) for the edge F[i] F[i+1]: whether c's path leaves the funnel at vertex i or before it
+// (towards the left end), i.e. c does not lie past the edge. On the left chain (before the apex) c lies
+// past an edge when it lies strictly left of it, on the right chain when strictly right of it. On the
+// edge's line, c is reached from the edge's vertex nearer to it: the outer one when c lies beyond it (a
 // terminal inside an edge, on the window itself, can also lie on the edge between the two). The
-// answers are true up to the tangent vertex and false from it on.
+// answers are false before the tangent vertex and true from it on.
 std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size_t lo, std::size_t hi, std::size_t apex,
                            const FilteredPoint& c, std::size_t guess, std::int64_t& steps) {
-  const auto reached_from = [&](std::size_t i) {  // not beyond(i)
+  const auto reached_from = [&](std::size_t i) {
     ++steps;
     const int side = orient(*F[i], *F[i + 1], c);
     if (side != 0) return i < apex ? side <= 0 : side >= 0;
@@ -44,8 +44,8 @@ std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size
 
 GeodesicTrees::GeodesicTrees(const Polygon& p, const VisibilityGraph& triangulation, const std::vector<Terminal>& terminals)
     : p_(p), triangulation_(triangulation), terminals_(terminals), terminals_on_edge_(p.size()),
-      trees_by_root_(terminals.size()), built_(terminals.size(), 0), kRoot(static_cast<std::uint32_t>(p.size())),
-      funnel_(2 * p.size() + 8, 0), funnel_points_(2 * p.size() + 8, nullptr) {
+      trees_by_root_(terminals.size()), built_(terminals.size(), 0), edge_root_id_(static_cast<std::uint32_t>(p.size())),
+      funnel_(2 * funnel_middle() + 2, 0), funnel_points_(funnel_.size(), nullptr) {
   vertices_.reserve(p.size());
   for (const Point& v : p.vertices()) vertices_.emplace_back(to_exact(v));
   edge_points_.reserve(terminals.size());
@@ -106,17 +106,20 @@ const FilteredPoint& GeodesicTrees::point(std::size_t terminal) const {
 void GeodesicTrees::path(std::size_t from, std::size_t to, std::vector<const FilteredPoint*>& out) {
   out.clear();
   const FilteredPoint &start = point(from), &end = point(to);
+  if (&start == &end || start.exact == end.exact) {
+    out.push_back(&end);
+    return;
+  }
   out.push_back(&start);
-  if (&start == &end || start.exact == end.exact) return;
   if (!built_[to]) build(to);
   const Tree& tree = trees_by_root_[to];
   const Terminal& source = terminals_[from];
-  const std::uint32_t root = terminals_[to].at_vertex ? static_cast<std::uint32_t>(terminals_[to].edge) : kRoot;
-  std::uint32_t id = source.at_vertex ? tree.vertex_parent[source.edge] : tree.terminal_parent[from];
+  const std::uint32_t root = terminals_[to].at_vertex ? static_cast<std::uint32_t>(terminals_[to].edge) : edge_root_id_;
+  std::uint32_t id = source.at_vertex ? tree.vertex_turn[source.edge] : tree.terminal_turn[from];
   while (id != root) {
     if (id == kUnset) throw std::logic_error("geodesics: a terminal not reached by the walk");
     out.push_back(&vertices_[id]);
-    id = tree.vertex_parent[id];
+    id = tree.vertex_turn[id];
   }
   out.push_back(&end);
 }
@@ -125,9 +128,10 @@ void GeodesicTrees::build(std::size_t root) {
   ++trees_;
   built_[root] = 1;
   Tree& tree = trees_by_root_[root];
-  tree.vertex_parent.assign(p_.size(), kUnset);
-  tree.terminal_parent.assign(terminals_.size(), kUnset);
+  tree.vertex_turn.assign(p_.size(), kUnset);
+  tree.terminal_turn.assign(terminals_.size(), kUnset);
   root_point_ = &point(root);
+  root_id_ = terminals_[root].at_vertex ? static_cast<std::uint32_t>(terminals_[root].edge) : edge_root_id_;
   if (terminals_[root].at_vertex) start_at_vertex(terminals_[root].edge, tree);
   else start_inside_edge(root, tree);
 }
@@ -137,14 +141,14 @@ void GeodesicTrees::build(std::size_t root) {
 void GeodesicTrees::start_at_vertex(std::size_t v, Tree& tree) {
   const std::uint32_t self = static_cast<std::uint32_t>(v);
   for (std::size_t edge : {v, p_.prev(v)})
-    for (std::uint32_t t : terminals_on_edge_[edge]) tree.terminal_parent[t] = self;
+    for (std::uint32_t t : terminals_on_edge_[edge]) tree.terminal_turn[t] = self;
   const std::uint32_t first = triangulation_.row_begin(v), last = triangulation_.row_end(v);
-  for (std::uint32_t h = first; h < last; ++h) tree.vertex_parent[triangulation_.head(h)] = self;
-  const std::uint32_t mid = static_cast<std::uint32_t>(p_.size() + 3);
+  for (std::uint32_t h = first; h < last; ++h) tree.vertex_turn[triangulation_.head(h)] = self;
+  const std::uint32_t mid = funnel_middle();
   for (std::uint32_t h = first; h + 1 < last; ++h) {
-    set(mid - 1, triangulation_.head(h + 1));
-    set(mid, self);
-    set(mid + 1, triangulation_.head(h));
+    set_funnel_entry(mid - 1, triangulation_.head(h + 1));
+    set_funnel_entry(mid, self);
+    set_funnel_entry(mid + 1, triangulation_.head(h));
     const std::uint32_t opposite = triangulation_.twin(h) - 1;
     if (towards_terminal_[opposite]) walk({opposite, mid - 1, mid + 1, mid, mid, self}, tree);
   }
@@ -154,14 +158,14 @@ void GeodesicTrees::start_at_vertex(std::size_t v, Tree& tree) {
 // looking into the triangle: u on the left, u+1 on the right.
 void GeodesicTrees::start_inside_edge(std::size_t root, Tree& tree) {
   const std::size_t u = terminals_[root].edge, w = p_.next(u);
-  for (std::uint32_t t : terminals_on_edge_[u]) tree.terminal_parent[t] = kRoot;
-  tree.vertex_parent[u] = tree.vertex_parent[w] = kRoot;
-  const std::uint32_t mid = static_cast<std::uint32_t>(p_.size() + 3);
-  set(mid - 1, static_cast<std::uint32_t>(u));
-  set(mid, kRoot);
-  set(mid + 1, static_cast<std::uint32_t>(w));
+  for (std::uint32_t t : terminals_on_edge_[u]) tree.terminal_turn[t] = edge_root_id_;
+  tree.vertex_turn[u] = tree.vertex_turn[w] = edge_root_id_;
+  const std::uint32_t mid = funnel_middle();
+  set_funnel_entry(mid - 1, static_cast<std::uint32_t>(u));
+  set_funnel_entry(mid, edge_root_id_);
+  set_funnel_entry(mid + 1, static_cast<std::uint32_t>(w));
   const std::uint32_t into_triangle = triangulation_.twin(triangulation_.row_begin(u));
-  if (towards_terminal_[into_triangle]) walk({into_triangle, mid - 1, mid + 1, mid, mid, kRoot}, tree);
+  if (towards_terminal_[into_triangle]) walk({into_triangle, mid - 1, mid + 1, mid, mid, edge_root_id_}, tree);
 }
 
 // Depth first over the dual tree. A window's triangle has its third vertex c just before the left end in
@@ -173,11 +177,11 @@ void GeodesicTrees::walk(const Window& first, Tree& tree) {
     const Window w = stack_.back();
     stack_.pop_back();
     if (w.slot == kRestore) {
-      set(w.write_at, w.id);
+      set_funnel_entry(w.write_at, w.id);
       continue;
     }
     stack_.push_back({kRestore, 0, 0, 0, w.write_at, funnel_[w.write_at]});
-    set(w.write_at, w.id);
+    set_funnel_entry(w.write_at, w.id);
     const std::uint32_t right = triangulation_.head(triangulation_.twin(w.slot));
     if (w.slot == triangulation_.row_begin(right)) {
       reach_edge(right, w, tree);
@@ -186,7 +190,7 @@ void GeodesicTrees::walk(const Window& first, Tree& tree) {
     ++triangles_;
     const std::uint32_t c = triangulation_.head(w.slot - 1);
     const std::uint32_t k = static_cast<std::uint32_t>(tangent(w, vertices_[c]));
-    if (tree.vertex_parent[c] == kUnset) tree.vertex_parent[c] = funnel_[k];
+    if (tree.vertex_turn[c] == kUnset) tree.vertex_turn[c] = last_turn(funnel_[k], vertices_[c], tree);
     const std::uint32_t towards_right = w.slot - 1, towards_left = triangulation_.twin(w.slot - 1) - 1;
     if (towards_terminal_[towards_right]) stack_.push_back({towards_right, k - 1, w.hi, std::max(w.apex, k), k - 1, c});
     if (towards_terminal_[towards_left]) stack_.push_back({towards_left, w.lo, k + 1, std::min(w.apex, k), k + 1, c});
@@ -196,14 +200,23 @@ void GeodesicTrees::walk(const Window& first, Tree& tree) {
 // The walk reaches polygon edge (edge, edge + 1) through window w: the parents of the terminals inside it.
 void GeodesicTrees::reach_edge(std::size_t edge, const Window& w, Tree& tree) {
   for (std::uint32_t t : terminals_on_edge_[edge])
-    if (tree.terminal_parent[t] == kUnset) tree.terminal_parent[t] = funnel_[tangent(w, edge_points_[t])];
+    if (tree.terminal_turn[t] == kUnset) tree.terminal_turn[t] = last_turn(funnel_[tangent(w, edge_points_[t])], edge_points_[t], tree);
 }
 
 std::size_t GeodesicTrees::tangent(const Window& w, const FilteredPoint& c) {
   return funnel_tangent(funnel_points_, w.lo, w.hi, w.apex, c, w.lo + (w.hi - w.lo) / 2, tangent_steps_);
 }
 
-void GeodesicTrees::set(std::size_t at, std::uint32_t id) {
+// The geodesic reaches c straight from funnel vertex u: it turns at u unless u is the root or its last
+// turn g, u and c lie on one line (the geodesic then runs straight from g through u to c).
+std::uint32_t GeodesicTrees::last_turn(std::uint32_t u, const FilteredPoint& c, const Tree& tree) const {
+  if (u == root_id_) return u;
+  const std::uint32_t g = tree.vertex_turn[u];
+  return orient(point_of(g), point_of(u), c) == 0 ? g : u;
+}
+
+// Sets funnel entry `at` to the vertex or root `id`.
+void GeodesicTrees::set_funnel_entry(std::size_t at, std::uint32_t id) {
   funnel_[at] = id;
   funnel_points_[at] = &point_of(id);
 }

@@ -11,18 +11,21 @@
 // it (a binary search over the funnel: O(log n), O(log r) when only notches bend the chains), and
 // the funnel splits there into the funnels of the triangle's two other sides. The funnel lives in one
 // array, where a child changes one entry, restored when its subtree is done (a depth-first walk with
-// an explicit stack): O(n log n) per root, O(n) space. The tree keeps the parent (the previous vertex on
-// the geodesic) of every vertex of the triangles it enters, and that of every terminal inside an edge,
-// found by the same search in the funnel of the edge's triangle. The walk enters a window only when a
-// terminal lies beyond it (counted once for all roots over the dual tree, O(n)): the geodesics to the
-// terminals cross only the triangles between, and every vertex of those gets its parent.
+// an explicit stack): O(n log n) per root, O(n) space. The tree keeps, for every vertex of the triangles
+// it enters and every terminal inside an edge (found by the same search in the funnel of the edge's
+// triangle), the last vertex before it where its geodesic turns, or the root. The walk enters a window
+// only when a terminal lies beyond it (counted once for all roots over the dual tree, O(n)): the
+// geodesics to the terminals cross only the triangles between, and every vertex of those is reached.
 //
-// Ties: a geodesic that passes straight through a vertex (collinear with the vertices before and after
-// it) lists that vertex, so a path lists every boundary point where it touches the boundary at a vertex
-// and its first point after a start in P is the first boundary point it meets.
+// Turns only: a geodesic that passes straight through a vertex (collinear with the points before and
+// after it) does not list it, so a path has O(r) points, the notches where it turns and its two ends.
+// Its first point after a start X in P lies on the ray along which it leaves X, at or beyond the first
+// point of the boundary that it meets.
 //
-// Exact: every decision is an orientation of three points, taken on intervals and, when they do not
-// settle it, on exact rationals (a root or a terminal may be a rational point inside an edge).
+// Exact: every decision is an orientation of three points, taken with CGAL's filtered predicate when
+// all three are in doubles, else on intervals and, when they do not settle it, on exact rationals (a
+// root or a terminal may be a rational point inside an edge); a tie in a funnel search compares
+// positions along a line exactly.
 #pragma once
 
 #include "algorithms/boundary_chains.h"
@@ -110,8 +113,8 @@ class GeodesicTrees {
   GeodesicTrees& operator=(const GeodesicTrees&) = delete;
 
   // Replaces `out` with the geodesic from terminal `from` to terminal `to`: its first point, the vertices
-  // where it touches the boundary in order, and its last point (a single point when the two coincide).
-  // The tree rooted at `to` is built the first time it is needed, O(n log n); then O(length).
+  // where it turns in order, and its last point (only `to`'s point when the two coincide). The tree
+  // rooted at `to` is built the first time it is needed, O(n log n); then O(length).
   void path(std::size_t from, std::size_t to, std::vector<const FilteredPoint*>& out);
   // The terminal's point; a terminal at a vertex shares the vertex's point object.
   const FilteredPoint& point(std::size_t terminal) const;
@@ -122,9 +125,10 @@ class GeodesicTrees {
 
  private:
   static constexpr std::uint32_t kUnset = UINT32_MAX;
-  // Parents are vertex ids, or kRoot for a root inside an edge.
+  // Per vertex and per terminal, the last turn before it on its geodesic: a vertex id, or the root's
+  // (edge_root_id_ for a root inside an edge).
   struct Tree {
-    std::vector<std::uint32_t> vertex_parent, terminal_parent;
+    std::vector<std::uint32_t> vertex_turn, terminal_turn;
   };
   // One window of the walk: the half-edge right end -> left end (as seen from the root) and the funnel
   // F[lo..hi] with its apex; entering it first sets F[write_at] (a new end) to `id`. A window whose slot
@@ -142,9 +146,12 @@ class GeodesicTrees {
   void walk(const Window& first, Tree& tree);
   void reach_edge(std::size_t edge, const Window& w, Tree& tree);
   std::size_t tangent(const Window& w, const FilteredPoint& c);
-  // Sets funnel entry `at` to the vertex or root `id`.
-  void set(std::size_t at, std::uint32_t id);
-  const FilteredPoint& point_of(std::uint32_t id) const { return id == kRoot ? *root_point_ : vertices_[id]; }
+  std::uint32_t last_turn(std::uint32_t reached_from, const FilteredPoint& c, const Tree& tree) const;
+  void set_funnel_entry(std::size_t at, std::uint32_t id);
+  const FilteredPoint& point_of(std::uint32_t id) const { return id == edge_root_id_ ? *root_point_ : vertices_[id]; }
+  // The funnel array's middle, where each walk starts: a walk adds at most one entry on either side per
+  // triangle, at most n - 2 of them.
+  std::uint32_t funnel_middle() const { return static_cast<std::uint32_t>(p_.size() + 3); }
 
   const Polygon& p_;
   const VisibilityGraph& triangulation_;
@@ -156,7 +163,8 @@ class GeodesicTrees {
   std::vector<char> towards_terminal_;
   std::vector<Tree> trees_by_root_;
   std::vector<char> built_;
-  const std::uint32_t kRoot;
+  const std::uint32_t edge_root_id_;  // the id of a root inside an edge
+  std::uint32_t root_id_ = 0;         // the id of the root being walked
   // The walk's funnel (ids), its entries as points for funnel_tangent, and the root being walked.
   std::vector<std::uint32_t> funnel_;
   std::vector<const FilteredPoint*> funnel_points_;

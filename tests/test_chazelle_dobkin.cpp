@@ -5,13 +5,15 @@
 // pattern, by a grid of candidate Steiner points checked against the definition.
 // Then the programs (chazelle-dobkin, chazelle-dobkin-n5): valid, between ceil(r/2) + 1 and min(keil-snoeyink, r + 1)
 // pieces, the known optimum of the x-pattern family (2m + 1) and of facing pairs of notches (r/2 + 1),
-// and at least as many patterns as an exhaustive search over compatible X2- and X3-patterns. Last,
+// and at least as many patterns as an exhaustive search over compatible X2- and X3-patterns. The
+// geodesics its scans use (algorithms/geodesics.h) against a brute-force shortest-path search. Last,
 // chazelle-dobkin's X4 tables (the scan over loose points) against chazelle-dobkin-n5's search of every
 // pair: the same count on every family, on every rotation (both pairings of the x4-quads groups), on
 // jittered x4-quads with crossing rays and with spikes where only "XY inside P" fails; every X4 of
 // chazelle-dobkin-n5 with angles below 180 degrees has a loose X4 on the same notches (a brute-force
 // Lemma 9 check, Theorem 18's claim on samples); the rows E and W themselves, every entry against that
-// brute force given the program's S; and the counters the time bound rests on.
+// brute force given the program's S; every row against walks that test P4 with the segment search; and
+// the counters the time bound rests on.
 #include "algorithms/chazelle_dobkin_patterns.h"
 #include "algorithms/chazelle_dobkin_tables.h"
 #include "algorithms/geodesics.h"
@@ -409,9 +411,10 @@ std::size_t same_count(const Polygon& p, const std::string& where) {
 // Geodesics (algorithms/geodesics.h) against a brute force that shares no code with them: which pairs of
 // points (vertices, and points inside every third edge) see each other in the closed polygon, tested
 // against every edge and vertex, then Dijkstra's shortest paths over those pairs. Every geodesic must
-// join points that see each other, list every vertex it passes through (the tie convention), and be as
-// long as the brute force's shortest path: with all those points as terminals, and with only the
-// notches and the points inside edges.
+// join points that see each other, turn at every point it lists between its ends, and be as long as the
+// brute force's shortest path: with all those points as terminals, and with only the notches and the
+// points inside edges; each time with a second terminal at the first point inside an edge (two ray
+// ends at one point).
 struct GeodesicCheck {
   explicit GeodesicCheck(const Polygon& polygon) : p(polygon) {
     for (std::size_t v = 0; v < p.size(); ++v) {
@@ -508,6 +511,7 @@ TEST(Geodesics, ShortestPathsOfTheBruteForce) {
       every[t] = t;
       if (!brute.terminals[t].at_vertex || p.is_reflex(brute.terminals[t].edge)) sparse.push_back(t);
     }
+    for (std::vector<std::size_t>* chosen : {&every, &sparse}) chosen->push_back(p.size());
     for (const std::vector<std::size_t>* chosen : {&every, &sparse}) {
       std::vector<GeodesicTrees::Terminal> terminals;
       for (std::size_t t : *chosen) terminals.push_back(brute.terminals[t]);
@@ -526,9 +530,9 @@ TEST(Geodesics, ShortestPathsOfTheBruteForce) {
             ASSERT_LT(ta, count) << where;
             ASSERT_LT(tb, count) << where;
             EXPECT_TRUE(brute.sees[ta * count + tb]) << where << ": " << source << " -> " << target << " step " << k;
-            for (const QPoint& v : brute.corners)
-              EXPECT_FALSE(orient(a, b, v) == 0 && CGAL::collinear_are_strictly_ordered_along_line(a, v, b))
-                  << where << ": " << source << " -> " << target << " passes through a vertex it does not list";
+            if (k > 0) {
+              EXPECT_NE(orient(path[k - 1]->exact, a, b), 0) << where << ": " << source << " -> " << target << " lists a point where it does not turn";
+            }
             length += brute.length(a, b);
           }
           const double expected = brute.distance[source * count + target];
@@ -638,7 +642,7 @@ TEST(ChazelleDobkinTables, SameCountOnJitteredQuadsWithSpikes) {
                                     " seed=" + std::to_string(seed) + " rotated " + std::to_string(by);
           const Polygon turned = rotated(p, by);
           same_count(turned, where);
-          cd::ProgramCubic alone(turned, cd::ProgramCubic::Walks::kEachAlone);
+          cd::ProgramCubic alone(turned, cd::ProgramCubic::P4Test::kSegmentSearch);
           Counters counters;
           alone.run(counters);
           alone.report(counters);
@@ -923,7 +927,7 @@ TEST(ChazelleDobkinTables, GeodesicsFindTheWitnessesOfWalksAlone) {
   }
   std::int64_t witnesses = 0, shared_ends = 0;
   for (const auto& [p, where] : polygons) {
-    cd::ProgramCubic seen(p), alone(p, cd::ProgramCubic::Walks::kEachAlone);
+    cd::ProgramCubic seen(p), alone(p, cd::ProgramCubic::P4Test::kSegmentSearch);
     Counters seen_counters, alone_counters;
     seen.run(seen_counters);
     alone.run(alone_counters);
