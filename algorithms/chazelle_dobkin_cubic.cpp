@@ -143,15 +143,16 @@
 // - The thesis's text stops before saying how its scans test P4; its "O(N) per interval after O(N^3)
 //   preprocessing" (for the X4 term) suggests a table of what each loose point sees of each ray. The
 //   funnels of (7) compute those entries as the scans need them and store none, but their geodesic
-//   trees cost O(n r log n), where Algorithm CD's preprocessing of the polygon is O(n + r^2 log n). chosen()'s full check still tests P4 as a
-//   segment search on the boundary's convex chains (algorithms/boundary_chains.h), O(r log(n/r)) per
-//   test, for O(r^2) chosen patterns. Measured at e6bf1f2 (seed 1, `polydecomp run --json`;
-//   "x4_p4_tests" / "x4_funnel_steps", seconds; in brackets the walks with segment searches that (7)
-//   replaced: their tests, seconds): notch-heavy n = 50, 100, 200, 400: 8,136 / 11,359, 0.05 s;
-//   77,542 / 111,774, 0.30 s; 638,076 / 934,447, 1.45 s; 5,216,414 / 7,778,005, 9.37 s (3,515, 0.06 s;
-//   35,362, 0.49 s; 306,687, 4.00 s; 2,627,417, 33.0 s): each count grows by 8.2-9.6 when r doubles.
-//   Random n = 2000, r = 100 and 200: 13,098 / 30,334, 0.63 s and 81,892 / 184,936, 4.21 s (8,084 and
-//   58,858 tests; 4.1-4.7 s at r = 200, where STEP 2's X3 tests take most of the time).
+//   trees cost O(n r log n), where Algorithm CD's preprocessing of the polygon is O(n + r^2 log n).
+//   chosen()'s full check still tests P4 as a segment search on the boundary's convex chains
+//   (algorithms/boundary_chains.h), O(r log(n/r)) per test, for O(r^2) chosen patterns. Measured at
+//   e6bf1f2 (seed 1, `polydecomp run --json`; "x4_p4_tests" / "x4_funnel_steps", seconds; in brackets
+//   the walks with segment searches that (7) replaced: their tests, seconds): notch-heavy n = 50, 100,
+//   200, 400: 8,136 / 11,359, 0.05 s; 77,542 / 111,774, 0.30 s; 638,076 / 934,447, 1.45 s; 5,216,414 /
+//   7,778,005, 9.37 s (3,515, 0.06 s; 35,362, 0.49 s; 306,687, 4.00 s; 2,627,417, 33.0 s): each count
+//   grows by 8.2-9.6 when r doubles. Random n = 2000, r = 100 and 200: 13,098 / 30,334, 0.63 s and
+//   81,892 / 184,936, 4.21 s (8,084 and 58,858 tests; 4.1-4.7 s at r = 200, where STEP 2's X3 tests
+//   take most of the time).
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
 //   superranges; see chazelle_dobkin_patterns.h).
@@ -159,11 +160,11 @@
 // Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists, O(n log n) for each of
 // at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
 // O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for r < 32768), O(r^3)
-// over the O(r^2) intervals; chosen()'s checks O(r^3 log(n/r)). Worst case O(n r log n + r^3 + r^3 log(n/r)). Space O(n r) for the
-// trees, O(r^3) for the rows (a row per interval with a witness) and O(r^2) rationals for the lists
-// and loose points. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an
-// optimal convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points
-// exact.
+// over the O(r^2) intervals; chosen()'s checks O(r^3 log(n/r)). Worst case O(n r log n + r^3 +
+// r^3 log(n/r)). Space O(n r) for the trees, O(r^3) for the rows (a row per interval with a witness)
+// and O(r^2) rationals for the lists and loose points. Pre: a simple counter-clockwise polygon with
+// fewer than 32768 notches. Output: an optimal convex decomposition (OPT = r + 1 - the most compatible
+// patterns) under A18', Steiner points exact.
 //
 // Counters, besides the program's and the patterns': "x4_loose_points" (pairs of rays meeting inside
 // both), "x4_rays_at_vertex" (loose rays clipped at a vertex), "x4_table_entries" (queries past their
