@@ -197,7 +197,8 @@ void GeodesicTrees::walk(const Window& first, Tree& tree) {
   }
 }
 
-// The walk reaches polygon edge (edge, edge + 1) through window w: the parents of the terminals inside it.
+// The walk reaches polygon edge (edge, edge + 1) through window w: the last turns before the terminals
+// inside it.
 void GeodesicTrees::reach_edge(std::size_t edge, const Window& w, Tree& tree) {
   for (std::uint32_t t : terminals_on_edge_[edge])
     if (tree.terminal_turn[t] == kUnset) tree.terminal_turn[t] = last_turn(funnel_[tangent(w, edge_points_[t])], edge_points_[t], tree);
