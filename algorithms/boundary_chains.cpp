@@ -131,10 +131,8 @@ SegmentSearch::SegmentSearch(const Polygon& p, const std::vector<QPoint>& exact)
   for (std::size_t i = leaves_ - 1; i >= 1; --i) boxes_[i] = boxes_[2 * i] + boxes_[2 * i + 1];
 }
 
-bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId skip) { return search(s, t, skip); }
-
 // Descends the hierarchy from its root into the nodes whose box can meet the segment.
-bool SegmentSearch::search(const QPoint& s, const QPoint& t, VertexId skip) {
+bool SegmentSearch::meets_boundary(const QPoint& s, const QPoint& t, VertexId skip) {
   s_ = &s, t_ = &t;
   st_ = Segment(s, t);
   u_ = t - s;

@@ -152,7 +152,6 @@ class SegmentSearch {
   bool chain_meets(std::size_t k, VertexId skip);
   bool box_meets(const CGAL::Bbox_2& box) const;
   static CGAL::Bbox_2 box_of(const QPoint& s, const QPoint& t);
-  bool search(const QPoint& s, const QPoint& t, VertexId skip);
   Interval line_side(double x, double y) const;
 
   const Polygon& p_;

@@ -67,8 +67,7 @@ void GeodesicTrees::mark_windows_towards_terminals() {
   for (std::uint32_t a = 0; a < p_.size(); ++a)
     for (std::uint32_t h = triangulation_.row_begin(a); h + 1 < triangulation_.row_end(a); ++h) {
       if (left_of[h] != kUnset) continue;
-      const std::uint32_t b_to_c = triangulation_.twin(h) - 1, c_to_a = triangulation_.twin(b_to_c) - 1;
-      for (std::uint32_t s : {h, b_to_c, c_to_a}) left_of[s] = count;
+      for (std::uint32_t s : triangle_slots(h)) left_of[s] = count;
       owner[count++] = h;
     }
   std::vector<std::uint32_t> weight(count, 0), parent(count, kUnset), order;
@@ -79,7 +78,7 @@ void GeodesicTrees::mark_windows_towards_terminals() {
     const std::uint32_t t = pending.back();
     pending.pop_back();
     order.push_back(t);
-    for (std::uint32_t s : {owner[t], triangulation_.twin(owner[t]) - 1, triangulation_.twin(triangulation_.twin(owner[t]) - 1) - 1}) {
+    for (std::uint32_t s : triangle_slots(owner[t])) {
       const std::uint32_t across = left_of[triangulation_.twin(s)];
       if (across != kUnset && parent[across] == kUnset) parent[across] = t, pending.push_back(across);
     }
@@ -96,6 +95,12 @@ void GeodesicTrees::mark_windows_towards_terminals() {
     else
       towards_terminal_[s] = (parent[there] == here ? below[there] : below[0] - below[here]) > 0;
   }
+}
+
+// The three slots with the triangle on the left of slot h (a -> b) on their left: a -> b, b -> c, c -> a.
+std::array<std::uint32_t, 3> GeodesicTrees::triangle_slots(std::uint32_t h) const {
+  const std::uint32_t b_to_c = triangulation_.twin(h) - 1;
+  return {h, b_to_c, triangulation_.twin(b_to_c) - 1};
 }
 
 const FilteredPoint& GeodesicTrees::point(std::size_t terminal) const {

@@ -35,6 +35,7 @@
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -140,6 +141,7 @@ class GeodesicTrees {
   static constexpr std::uint32_t kRestore = UINT32_MAX;
 
   void mark_windows_towards_terminals();
+  std::array<std::uint32_t, 3> triangle_slots(std::uint32_t h) const;
   void build(std::size_t root);
   void start_at_vertex(std::size_t v, Tree& tree);
   void start_inside_edge(std::size_t root, Tree& tree);
