@@ -101,12 +101,7 @@ Chain whole_boundary(const Polygon& p) {
 }
 
 // The sign of an interval when it is settled, else kUnsettled.
-int settled_sign(const CGAL::Interval_nt<false>& v) {
-  if (v.inf() > 0) return 1;
-  if (v.sup() < 0) return -1;
-  if (v.inf() == 0 && v.sup() == 0) return 0;
-  return kUnsettled;
-}
+int settled_sign(const Interval& v) { return certain_sign(v).value_or(kUnsettled); }
 
 // Chains shorter than this are tested edge by edge: cheaper than setting up the searches, still O(1).
 constexpr std::size_t kShortChain = 8;
@@ -168,7 +163,7 @@ bool SegmentSearch::box_meets(const CGAL::Bbox_2& box) const {
 }
 
 // cross(u, (x, y) - s) in interval arithmetic, for a point of the input. Pre: rounding upwards.
-SegmentSearch::Interval SegmentSearch::line_side(double x, double y) const {
+Interval SegmentSearch::line_side(double x, double y) const {
   return ux_ * (Interval(y) - sy_) - uy_ * (Interval(x) - sx_);
 }
 

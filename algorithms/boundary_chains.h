@@ -11,10 +11,10 @@
 // r notches (Theorem 3), found in one O(n) pass.
 #pragma once
 
+#include "core/filtered.h"
 #include "core/registry.h"
 
 #include <CGAL/Bbox_2.h>
-#include <CGAL/Interval_nt.h>
 
 #include <algorithm>
 #include <cmath>
@@ -138,8 +138,6 @@ class SegmentSearch {
   std::int64_t steps() const { return steps_; }
 
  private:
-  using Interval = CGAL::Interval_nt<false>;
-
   const QPoint& x(std::size_t j) const { return exact_[chain_vertex(p_, *chain_, j)]; }
   const Point& input(std::size_t j) const { return p_[chain_vertex(p_, *chain_, j)]; }
   int side(std::size_t j);

@@ -1,28 +1,10 @@
 // Geodesic trees by the funnel walk; see geodesics.h.
 #include "algorithms/geodesics.h"
 
-#include <CGAL/FPU.h>
-
 #include <algorithm>
 #include <stdexcept>
 
 namespace pd {
-
-FilteredPoint::FilteredPoint(const QPoint& p)
-    : exact(p), x(CGAL::to_interval(p.x())), y(CGAL::to_interval(p.y())),
-      in_doubles(x.inf() == x.sup() && y.inf() == y.sup()) {}
-
-int orient(const FilteredPoint& a, const FilteredPoint& b, const FilteredPoint& c) {
-  if (a.in_doubles && b.in_doubles && c.in_doubles)
-    return orient(Point(a.x.inf(), a.y.inf()), Point(b.x.inf(), b.y.inf()), Point(c.x.inf(), c.y.inf()));
-  {
-    CGAL::Protect_FPU_rounding<true> upwards;
-    const CGAL::Interval_nt<false> d = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-    if (d.inf() > 0) return 1;
-    if (d.sup() < 0) return -1;
-  }
-  return orient(a.exact, b.exact, c.exact);
-}
 
 // reached_from(i) for the edge F[i] F[i+1]: whether c's path leaves the funnel at vertex i or before it
 // (towards the left end), i.e. c does not lie past the edge. On the left chain (before the apex) c lies

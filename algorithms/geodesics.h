@@ -30,9 +30,8 @@
 
 #include "algorithms/boundary_chains.h"
 #include "algorithms/visibility.h"
+#include "core/filtered.h"
 #include "core/geometry.h"
-
-#include <CGAL/Interval_nt.h>
 
 #include <algorithm>
 #include <array>
@@ -41,19 +40,6 @@
 #include <vector>
 
 namespace pd {
-
-// A point with interval coordinates alongside its exact ones, and whether both are doubles (as the
-// polygon's vertices are).
-struct FilteredPoint {
-  explicit FilteredPoint(const QPoint& p);
-  QPoint exact;
-  CGAL::Interval_nt<false> x, y;
-  bool in_doubles;
-};
-
-// orient() on the doubles when all three points are in doubles (CGAL's filtered predicate), else on the
-// intervals when they settle the sign, else on the rationals.
-int orient(const FilteredPoint& a, const FilteredPoint& b, const FilteredPoint& c);
 
 // The first k in [lo, hi] where `holds` is true, for a predicate false before some index and true from
 // it on (and taken as true at hi): galloping from `guess` towards the answer, then bisecting, so

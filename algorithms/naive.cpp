@@ -41,7 +41,7 @@
 //   unique neighbour making a non-reflex angle" of the OCR'd text is read as "the first one".
 #include "algorithms/naive.h"
 
-#include <CGAL/Interval_nt.h>
+#include "core/filtered.h"
 
 #include <algorithm>
 #include <optional>
@@ -55,53 +55,25 @@ namespace pd {
 namespace naive {
 namespace {
 
-// Unprotected intervals: each filtered predicate sets the rounding mode once, for all its operations.
-using Interval = CGAL::Interval_nt<false>;
-
-struct Box {
-  Interval x, y;
-};
-
-// A constructed point: exact, with an interval box around it so that most predicates on it are
-// settled in floating point.
-struct XPoint {
-  explicit XPoint(QPoint q)
-      : exact(std::move(q)), box{Interval(CGAL::to_interval(exact.x())), Interval(CGAL::to_interval(exact.y()))} {}
-  QPoint exact;
-  Box box;
-};
-
 // An input vertex (double) or a constructed point.
 class Ref {
  public:
   Ref(const Point& p) : input_(&p) {}
-  Ref(const XPoint& q) : made_(&q) {}
+  Ref(const FilteredPoint& q) : made_(&q) {}
   const Point* input() const { return input_; }
   Box box() const { return input_ ? Box{Interval(input_->x()), Interval(input_->y())} : made_->box; }
   QPoint exact() const { return input_ ? to_exact(*input_) : made_->exact; }
 
  private:
   const Point* input_ = nullptr;
-  const XPoint* made_ = nullptr;
+  const FilteredPoint* made_ = nullptr;
 };
-
-std::optional<int> certain_sign(const Interval& v) {
-  if (v.inf() > 0) return 1;
-  if (v.sup() < 0) return -1;
-  if (v.inf() == 0 && v.sup() == 0) return 0;
-  return std::nullopt;
-}
 
 // Exact orientation of (p, q, r), filtered by interval arithmetic.
 int turn(Ref p, Ref q, Ref r) {
   if (p.input() && q.input() && r.input()) return orient(*p.input(), *q.input(), *r.input());
-  const Box a = p.box(), b = q.box(), c = r.box();
-  std::optional<int> sign;
-  {
-    CGAL::Protect_FPU_rounding<true> upwards;
-    sign = certain_sign((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
-  }
-  return sign ? *sign : orient(p.exact(), q.exact(), r.exact());
+  if (const std::optional<int> sign = interval_orient(p.box(), q.box(), r.box())) return *sign;
+  return orient(p.exact(), q.exact(), r.exact());
 }
 
 // Exact sign of the dot product (q - p) . (s - r), filtered.
@@ -212,7 +184,7 @@ class Decomposer {
   struct Hit {
     LineRef line;
     VertexId right, left;  // the line's ends on the right and on the left of the perturbed ray
-    XPoint point;          // where the unperturbed extension meets the line
+    FilteredPoint point;   // where the unperturbed extension meets the line
   };
 
   Ref at(VertexId id) const { return id < n_ ? Ref(p_[id]) : Ref(steiner_[id - n_]); }
@@ -261,12 +233,12 @@ class Decomposer {
         return;
       }
     }
-    best_.emplace(Hit{line, right, left, XPoint(crossing_point(line, right))});
+    best_.emplace(Hit{line, right, left, FilteredPoint(crossing_point(line, right))});
   }
 
-  XPoint crossing_point(LineRef line, VertexId right) const {
-    if (turn(at(a_), at(v_), at(right)) == 0) return XPoint(at(right).exact());
-    return XPoint(meet(at(a_).exact(), at(v_).exact(), carrier(line)));
+  FilteredPoint crossing_point(LineRef line, VertexId right) const {
+    if (turn(at(a_), at(v_), at(right)) == 0) return FilteredPoint(at(right).exact());
+    return FilteredPoint(meet(at(a_).exact(), at(v_).exact(), carrier(line)));
   }
 
   void shoot(VertexId v, BoundarySearch& search) {
@@ -297,7 +269,7 @@ class Decomposer {
 
   // Where, in the line's sequence of vertices [first end, inner..., second end], the first vertex
   // not before `h` is, and whether it is at h.
-  std::pair<std::size_t, bool> locate(LineRef line, const XPoint& h) {
+  std::pair<std::size_t, bool> locate(LineRef line, const FilteredPoint& h) {
     // Not a structured binding: the lambdas below capture the ends, which C++17 does not allow of one.
     VertexId e0, e1;
     std::tie(e0, e1) = ends(line);
@@ -333,10 +305,10 @@ class Decomposer {
   // hit line at h, towards the sub-edge's end q left of the ray. t bounds the turn by the range, c by
   // the unresolved notch inside triangle (v, h, t) with the smallest angle from the extension; the
   // segment turns by the largest angle atan(2^-k), k >= 0, short of c (dyadic_turn).
-  Line turned_line(const XPoint& h, VertexId q, const Line& hit_line) {
+  Line turned_line(const FilteredPoint& h, VertexId q, const Line& hit_line) {
     ++repairs_;
     const QPoint v = at(v_).exact(), a = at(a_).exact();
-    const XPoint t(turn(at(b_), at(v_), at(q)) <= 0 ? at(q).exact() : meet(at(b_).exact(), v, hit_line));
+    const FilteredPoint t(turn(at(b_), at(v_), at(q)) <= 0 ? at(q).exact() : meet(at(b_).exact(), v, hit_line));
     std::optional<VertexId> blocker;
     for (VertexId w : pending_) {
       if (!unresolved_[w] || w == v_) continue;
@@ -354,7 +326,7 @@ class Decomposer {
   const std::size_t n_;
   Decomposition d_;
   Counters& counters_;
-  std::vector<XPoint> steiner_;
+  std::vector<FilteredPoint> steiner_;
   std::unordered_map<std::uint32_t, std::vector<VertexId>> inner_of_edge_;  // only edges that have some
   std::vector<Segment> segments_;
   std::vector<VertexId> pending_;
