@@ -109,7 +109,7 @@
 //     no point of H. ("Strictly": a segment XY that touches the boundary touches a vertex, which then
 //     lies on one of the two rays.)
 //     So a scan takes the two funnels of G's ends to H's ends from the trees of geodesics rooted at
-//     H's ends (each built the first time a scan needs it, O(n log n), at most 3r of them), and each
+//     H's ends (each built the first time a scan needs it, O(n + r log n), at most 3r of them), and each
 //     query its f1 and f2 by a search in each funnel and its range [lo, hi) by two searches along H.
 //     A place is tested by at most two orientations (a query adds one, for the angle), which tell where
 //     its Y lies: before the ray through f1 (towards H's notch), after the ray through f2 (towards the
@@ -143,7 +143,8 @@
 // - The thesis's text stops before saying how its scans test P4; its "O(N) per interval after O(N^3)
 //   preprocessing" (for the X4 term) suggests a table of what each loose point sees of each ray. The
 //   funnels of (7) compute those entries as the scans need them and store none, but their geodesic
-//   trees cost O(n r log n), where Algorithm CD's preprocessing of the polygon is O(n + r^2 log n).
+//   trees cost O(n r + r^2 log n), where Algorithm CD's preprocessing of the polygon is
+//   O(n + r^2 log n).
 //   chosen()'s full check still tests P4 as a segment search on the boundary's convex chains
 //   (algorithms/boundary_chains.h), O(r log(n/r)) per test, for O(r^2) chosen patterns. Measured at
 //   e6bf1f2 (seed 1, `polydecomp run --json`; "x4_p4_tests" / "x4_funnel_steps", seconds; in brackets
@@ -157,10 +158,10 @@
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
 //   superranges; see chazelle_dobkin_patterns.h).
 //
-// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists, O(n log n) for each of
-// at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
+// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists, O(n + r log n) for each
+// of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
 // O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for r < 32768), O(r^3)
-// over the O(r^2) intervals; chosen()'s checks O(r^3 log(n/r)). Worst case O(n r log n + r^3 +
+// over the O(r^2) intervals; chosen()'s checks O(r^3 log(n/r)). Worst case O(n log n + n r + r^3 +
 // r^3 log(n/r)). Space O(n r) for the trees, O(r^3) for the rows (a row per interval with a witness)
 // and O(r^2) rationals for the lists and loose points. Pre: a simple counter-clockwise polygon with
 // fewer than 32768 notches. Output: an optimal convex decomposition (OPT = r + 1 - the most compatible
@@ -191,7 +192,7 @@ Decomposition chazelle_dobkin(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*r*log(n)+r^3+r^3*log(n/r)", "== OPT",
+REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*log(n)+n*r+r^3+r^3*log(n/r)", "== OPT",
                              "Chazelle thesis (000) Sec. 2.4, Def. 2.4, Thm 18, Lemma 9", 20000, chazelle_dobkin});
 
 }  // namespace pd

@@ -13,7 +13,7 @@ namespace pd {
 // terminal inside an edge, on the window itself, can also lie on the edge between the two). The
 // answers are false before the tangent vertex and true from it on.
 std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size_t lo, std::size_t hi, std::size_t apex,
-                           const FilteredPoint& c, std::size_t guess, std::int64_t& steps) {
+                           const FilteredPoint& c, std::optional<std::size_t> guess, std::int64_t& steps) {
   const auto reached_from = [&](std::size_t i) {
     ++steps;
     const int side = orient(*F[i], *F[i + 1], c);
@@ -21,7 +21,7 @@ std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size
     const bool between = CGAL::collinear_are_strictly_ordered_along_line(F[i]->exact, c.exact, F[i + 1]->exact);
     return i < apex ? !between : between;
   };
-  return first_holding(lo, hi, guess, reached_from);
+  return guess ? first_holding(lo, hi, *guess, reached_from) : first_holding_from_ends(lo, hi, reached_from);
 }
 
 GeodesicTrees::GeodesicTrees(const Polygon& p, const VisibilityGraph& triangulation, const std::vector<Terminal>& terminals)
@@ -192,7 +192,7 @@ void GeodesicTrees::reach_edge(std::size_t edge, const Window& w, Tree& tree) {
 }
 
 std::size_t GeodesicTrees::tangent(const Window& w, const FilteredPoint& c) {
-  return funnel_tangent(funnel_points_, w.lo, w.hi, w.apex, c, w.lo + (w.hi - w.lo) / 2, tangent_steps_);
+  return funnel_tangent(funnel_points_, w.lo, w.hi, w.apex, c, std::nullopt, tangent_steps_);
 }
 
 // The geodesic reaches c straight from funnel vertex u: it turns at u unless u is the root or its last

@@ -8,12 +8,14 @@
 // From a root s, every triangle is entered once, through a window (a diagonal); the shortest paths
 // from s to the points of the window form a funnel: two concave chains from an apex to the window's
 // ends. The third vertex c of the triangle beyond is reached from the funnel vertex whose wedge holds
-// it (a binary search over the funnel: O(log n), O(log r) when only notches bend the chains), and
-// the funnel splits there into the funnels of the triangle's two other sides. The funnel lives in one
-// array, where a child changes one entry, restored when its subtree is done (a depth-first walk with
-// an explicit stack): O(n log n) per root, O(n) space. The tree keeps, for every vertex of the triangles
-// it enters and every terminal inside an edge (found by the same search in the funnel of the edge's
-// triangle), the last vertex before it where its geodesic turns, or the root. The walk enters a window
+// it, and the funnel splits there into the funnels of the triangle's two other sides. That vertex is
+// searched from both ends of the funnel at once (first_holding_from_ends), so a split into parts of
+// sizes a and b costs O(1 + log min(a, b)) orientations and the whole walk O(n), as with the finger
+// search trees of Guibas et al. The funnel lives in one array, where a child changes one entry,
+// restored when its subtree is done (a depth-first walk with an explicit stack): O(n) per root, O(n)
+// space. The tree keeps, for every vertex of the triangles it enters and every terminal inside an edge
+// (found by the same search in the funnel of the edge's triangle, O(log n) each), the last vertex
+// before it where its geodesic turns, or the root. The walk enters a window
 // only when a terminal lies beyond it (counted once for all roots over the dual tree, O(n)): the
 // geodesics to the terminals cross only the triangles between, and every vertex of those is reached.
 //
@@ -37,9 +39,21 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace pd {
+
+// The first k in (a, b] where `at` holds, given that it fails at a and holds at b: bisection.
+template <class At>
+std::ptrdiff_t bisect(std::ptrdiff_t a, std::ptrdiff_t b, const At& at) {
+  while (b - a > 1) {
+    const std::ptrdiff_t mid = a + (b - a) / 2;
+    if (at(mid)) b = mid;
+    else a = mid;
+  }
+  return b;
+}
 
 // The first k in [lo, hi] where `holds` is true, for a predicate false before some index and true from
 // it on (and taken as true at hi): galloping from `guess` towards the answer, then bisecting, so
@@ -73,12 +87,37 @@ std::size_t first_holding(std::size_t lo, std::size_t hi, std::size_t guess, con
       a = b;
     }
   }
-  while (b - a > 1) {
-    const std::ptrdiff_t mid = a + (b - a) / 2;
-    if (at(mid)) b = mid;
-    else a = mid;
+  return static_cast<std::size_t>(bisect(a, b, at));
+}
+
+// The same answer, galloping inwards from both ends in turn, then bisecting: O(1 + log(1 + min(k - lo,
+// hi - k))) calls. A walk that splits a list of m entries at the answer into two of sizes a + b = m + O(1)
+// (and so on in each part) then makes O(m + splits) calls in all, whatever the answers: with the
+// potential 2m - log2 m per list, a split's log2 min(a, b) is paid by the potential's drop plus O(1) (the
+// finger-search argument of Guibas, Hershberger, Leven, Sharir and Tarjan 1987, Sec. 2).
+template <class Holds>
+std::size_t first_holding_from_ends(std::size_t lo, std::size_t hi, const Holds& holds) {
+  const std::ptrdiff_t first = static_cast<std::ptrdiff_t>(lo) - 1, last = static_cast<std::ptrdiff_t>(hi);
+  std::ptrdiff_t a = first, b = last;  // holds fails at a (or a = lo - 1) and holds at b (or b = hi)
+  for (std::ptrdiff_t step = 1; b - a > 1; step *= 2) {
+    const std::ptrdiff_t from_left = first + step, from_right = last - step;
+    if (from_left >= b && from_right <= a) break;  // both gallops have passed the bracket
+    if (from_left < b) {
+      if (holds(static_cast<std::size_t>(from_left))) {
+        b = from_left;
+        break;
+      }
+      a = from_left;
+    }
+    if (from_right > a && from_right < b) {
+      if (!holds(static_cast<std::size_t>(from_right))) {
+        a = from_right;
+        break;
+      }
+      b = from_right;
+    }
   }
-  return static_cast<std::size_t>(b);
+  return static_cast<std::size_t>(bisect(a, b, [&](std::ptrdiff_t k) { return holds(static_cast<std::size_t>(k)); }));
 }
 
 // A funnel: points F[lo..hi], from the left end of a window (F[lo]) through the apex F[apex] to its right
@@ -86,9 +125,10 @@ std::size_t first_holding(std::size_t lo, std::size_t hi, std::size_t guess, con
 // the chains from the apex to the ends are the shortest paths to them. For a point c beyond the window or
 // on it, the index of the funnel vertex from which the shortest path reaches c in a straight line: the
 // last vertex of the path from the apex's root to c before c (of two on one line with c, the nearer).
-// Searched from `guess` (first_holding); adds the orientations taken to `steps`.
+// Searched from `guess` (first_holding), or from both ends at once without one (first_holding_from_ends);
+// adds the orientations taken to `steps`.
 std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size_t lo, std::size_t hi, std::size_t apex,
-                           const FilteredPoint& c, std::size_t guess, std::int64_t& steps);
+                           const FilteredPoint& c, std::optional<std::size_t> guess, std::int64_t& steps);
 
 class GeodesicTrees {
  public:
@@ -101,7 +141,7 @@ class GeodesicTrees {
 
   // Replaces `out` with the geodesic from terminal `from` to terminal `to`: its first point, the vertices
   // where it turns in order, and its last point (only `to`'s point when the two coincide). The tree
-  // rooted at `to` is built the first time it is needed, O(n log n); then O(length).
+  // rooted at `to` is built the first time it is needed, O(n + terminals * log n); then O(length).
   void path(std::size_t from, std::size_t to, std::vector<const FilteredPoint*>& out);
   // The terminal's point; a terminal at a vertex shares the vertex's point object.
   const FilteredPoint& point(std::size_t terminal) const;

@@ -486,6 +486,28 @@ struct GeodesicCheck {
   std::vector<double> distance;
 };
 
+// The tree walk's search (first_holding_from_ends) finds the first index where a monotone predicate
+// holds, like first_holding from any guess, with O(1 + log(1 + d)) calls for d the answer's distance to
+// the nearer end: what makes a tree O(n) (geodesics.h). Every range up to 40 entries, every answer.
+TEST(Geodesics, SearchFromBothEndsCostsTheLogOfTheNearerEnd) {
+  for (std::size_t lo = 0; lo < 3; ++lo)
+    for (std::size_t hi = lo; hi <= lo + 40; ++hi)
+      for (std::size_t k = lo; k <= hi; ++k) {
+        std::int64_t calls = 0;
+        const auto holds = [&](std::size_t i) {
+          EXPECT_TRUE(lo <= i && i < hi) << i;
+          ++calls;
+          return i >= k;
+        };
+        EXPECT_EQ(first_holding_from_ends(lo, hi, holds), k) << lo << " " << hi;
+        const std::size_t d = std::min(k - lo, hi - k);
+        std::int64_t log = 0;
+        while ((std::size_t{1} << log) <= d + 1) ++log;
+        EXPECT_LE(calls, 3 * (log + 2)) << lo << " " << hi << " " << k;
+        for (std::size_t guess = lo; guess <= hi; ++guess) EXPECT_EQ(first_holding(lo, hi, guess, holds), k);
+      }
+}
+
 TEST(Geodesics, ShortestPathsOfTheBruteForce) {
   std::vector<std::pair<Polygon, std::string>> polygons;
   for (const Sample& s : small_samples()) {
