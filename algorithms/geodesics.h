@@ -12,10 +12,10 @@
 // searched from both ends of the funnel at once (first_holding_from_ends), so a split into parts of
 // sizes a and b costs O(1 + log min(a, b)) orientations and the whole walk O(n), as with the finger
 // search trees of Guibas et al. The funnel lives in one array, where a child changes one entry,
-// restored when its subtree is done (a depth-first walk with an explicit stack): O(n) per root, O(n)
-// space. The tree keeps, for every vertex of the triangles it enters and every terminal inside an edge
-// (found by the same search in the funnel of the edge's triangle, O(log n) each), the last vertex
-// before it where its geodesic turns, or the root. The walk enters a window
+// restored when its subtree is done (a depth-first walk with an explicit stack). The tree keeps, for
+// every vertex of the triangles it enters and every terminal inside an edge (found by the same search
+// in the funnel of the edge's triangle, O(log n) each), the last vertex before it where its geodesic
+// turns, or the root: O(n + terminals log n) per root, O(n) space. The walk enters a window
 // only when a terminal lies beyond it (counted once for all roots over the dual tree, O(n)): the
 // geodesics to the terminals cross only the triangles between, and every vertex of those is reached.
 //

@@ -16,8 +16,8 @@
 //    edges. After each phase the edges not yet inserted are traced through the decomposition and
 //    each remembers the trapezoids its endpoints lie in, so that its own search later starts there.
 //    A run of pending edges is walked from trapezoid to trapezoid; where it starts, at an inserted
-//    edge, one search from the run's previous start finds it (expected O(log(N(h)/N(h-1))) for at
-//    most N(h) runs, O(n) per phase like the walking).
+//    edge, one search from the run's previous start finds it (expected O(log(N(h)/N(h-1))) for
+//    O(N(h)) runs in expectation, O(n) per phase like the walking).
 // 3. In every trapezoid inside the polygon whose top and bottom vertices are not joined by one of its
 //    sides, the diagonal between them; this cuts the polygon into monotone pieces, which
 //    triangulate_monotone_pieces (monotone.h) triangulates in linear time.
@@ -33,7 +33,7 @@
 // it has inserted a random sample of N(h) to 2N(h) edges in expectation (and phases that would end
 // together are one, at most log* n in all). The expected bound stays O(n log* n), by Clarkson and
 // Shor's counting (the trapezoids defined by a sample and crossed by at most j of its edges number
-// O(j^3) per edge of the sample, and O(j^4) of them contain a given point):
+// O((j+1)^3) per edge of the sample, and O((j+1)^4) of them contain a given point):
 // (a) tracing after a phase crosses O(n) trapezoids in expectation, as in the paper, since the
 //     inserted edges are a random sample;
 // (b) whatever the order within round k, every trapezoid that exists during it is defined by edges of

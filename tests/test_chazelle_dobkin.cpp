@@ -487,25 +487,34 @@ struct GeodesicCheck {
 };
 
 // The tree walk's search (first_holding_from_ends) finds the first index where a monotone predicate
-// holds, like first_holding from any guess, with O(1 + log(1 + d)) calls for d the answer's distance to
-// the nearer end: what makes a tree O(n) (geodesics.h). Every range up to 40 entries, every answer.
+// holds, like first_holding from any guess, with at most 3 bit_width(d + 1) + 2 calls for d the answer's
+// distance to the nearer end: what makes a tree O(n) (geodesics.h). Every answer in every range up to
+// 40 entries, and answers near either end of ranges of 2^16 and 2^20 entries, where a bisection or a
+// gallop from the middle would take 16 to 40 calls.
 TEST(Geodesics, SearchFromBothEndsCostsTheLogOfTheNearerEnd) {
+  const auto check = [](std::size_t lo, std::size_t hi, std::size_t k, bool from_every_guess) {
+    std::int64_t calls = 0;
+    const auto holds = [&](std::size_t i) {
+      EXPECT_TRUE(lo <= i && i < hi) << i;
+      ++calls;
+      return i >= k;
+    };
+    EXPECT_EQ(first_holding_from_ends(lo, hi, holds), k) << lo << " " << hi;
+    const std::size_t d = std::min(k - lo, hi - k);
+    std::int64_t width = 0;
+    while ((std::size_t{1} << width) <= d + 1) ++width;
+    EXPECT_LE(calls, 3 * width + 2) << lo << " " << hi << " " << k;
+    if (!from_every_guess) return;
+    for (std::size_t guess = lo; guess <= hi; ++guess) EXPECT_EQ(first_holding(lo, hi, guess, holds), k);
+  };
   for (std::size_t lo = 0; lo < 3; ++lo)
     for (std::size_t hi = lo; hi <= lo + 40; ++hi)
-      for (std::size_t k = lo; k <= hi; ++k) {
-        std::int64_t calls = 0;
-        const auto holds = [&](std::size_t i) {
-          EXPECT_TRUE(lo <= i && i < hi) << i;
-          ++calls;
-          return i >= k;
-        };
-        EXPECT_EQ(first_holding_from_ends(lo, hi, holds), k) << lo << " " << hi;
-        const std::size_t d = std::min(k - lo, hi - k);
-        std::int64_t log = 0;
-        while ((std::size_t{1} << log) <= d + 1) ++log;
-        EXPECT_LE(calls, 3 * (log + 2)) << lo << " " << hi << " " << k;
-        for (std::size_t guess = lo; guess <= hi; ++guess) EXPECT_EQ(first_holding(lo, hi, guess, holds), k);
-      }
+      for (std::size_t k = lo; k <= hi; ++k) check(lo, hi, k, true);
+  for (std::size_t size : {std::size_t{1} << 16, std::size_t{1} << 20})
+    for (std::size_t d = 0; d <= 8; ++d) {
+      check(5, 5 + size, 5 + d, false);
+      check(5, 5 + size, 5 + size - d, false);
+    }
 }
 
 TEST(Geodesics, ShortestPathsOfTheBruteForce) {
