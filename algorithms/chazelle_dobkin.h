@@ -11,8 +11,8 @@
 // between its notches); the Y-pattern joining z_i and z_j comes from patching the Y-subtrees kept in
 // B(.,.) and F(.,.) (STEP 2: cases Y1-Y4 of <ARG>), and B(i, j), F(i, j) are the one candidate subtree
 // hanging at z_i (resp. z_j) into V(i, j) (STEP 4: cases B1-B4, F1-F4 with the functions Y and Y').
-// STEP 5 finishes the remaining notches with the naive decomposition (algorithms/naive.h), and the
-// cut graph is turned into pieces by the shared routine (Theorem 10). Pattern detection (Theorems
+// STEP 5 finishes the remaining notches with the naive decomposition searched through the boundary's
+// convex chains (naive_complete_chains, algorithms/naive.h; Theorem 4), and the cut graph is turned into pieces by the shared routine (Theorem 10). Pattern detection (Theorems
 // 13-15, Corollary 14) is in chazelle_dobkin_patterns.h.
 //
 // Orientation: the thesis walks the boundary clockwise; our polygons are counter-clockwise and the
@@ -41,13 +41,13 @@
 //   that needs the edge turned further than that point is missed: a compromise of exactness against
 //   the thesis's extreme (a symbolic perturbation would remove it); no test has met such a case.
 // - STEP 3's X4 term is left to the variant (x4_term).
-// Deviation: superranges are replaced by visibility (see chazelle_dobkin_patterns.h), which makes the
-// preprocessing O(n log n + n r) in place of O(n + r^2 log n).
+// Deviation: superranges are replaced by ray shooting or by a triangulation's walks (the variant's
+// Views, chazelle_dobkin_patterns.h), which makes the preprocessing O(n + r^3 log n) or
+// O(n log n + n r) in place of O(n + r^2 log n).
 //
-// Time, apart from x4_term: O(n log n + n r + r^2 log n) preprocessing; the joint of each of the O(r^2)
-// stored subtrees is built once; then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each
-// O(1) (Theorems 13 and 14, chazelle_dobkin_patterns.h): O(n log n + n r + r^3), plus STEP 5's naive
-// completion, O(n r). Space O(r^2) subproblems and subtree joints, plus O(n).
+// Time, apart from x4_term: that preprocessing; the joint of each of the O(r^2) stored subtrees is
+// built once; then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each O(1) (Theorems 13
+// and 14, chazelle_dobkin_patterns.h); STEP 5's naive completion, O(n + r^2 log(n/r)). Space O(r^2) subproblems and subtree joints, plus O(n).
 // Output: exactly r + 1 - S(0, r-1) convex pieces; Steiner points exact.
 #pragma once
 
@@ -94,8 +94,8 @@ struct Best {
 class Program {
  public:
   virtual ~Program() = default;
-  explicit Program(const Polygon& p)
-      : p_(p), patterns_(p), r_(static_cast<int>(patterns_.notches().size())),
+  explicit Program(const Polygon& p, Views views = Views::kRayShooting)
+      : p_(p), patterns_(p, views), r_(static_cast<int>(patterns_.notches().size())),
         best_(static_cast<std::size_t>(r_) * r_), b_(best_.size()), f_(best_.size()), b_joint_(best_.size()),
         f_joint_(best_.size()) {}
 
@@ -121,7 +121,7 @@ class Program {
     for (int k = 0; k < r_; ++k)
       if (!used_[k]) rest.push_back(patterns_.notches()[k]);
     const std::size_t steiner = d.steiner.size();
-    d = naive_complete(p_, std::move(d), rest, counters);
+    d = naive_complete_chains(p_, std::move(d), rest, counters);
     patterns_.report(counters);
     counters["subproblems"] = subproblems_;
     counters["y_found"] = y_found_;
@@ -134,6 +134,10 @@ class Program {
   // STEP 3's B: the best X4-pattern joining z_i and z_j, with the patterns between its notches, if it
   // counts more than `to_beat`.
   virtual std::optional<X4Choice> x4_term(int i, int j, int to_beat) = 0;
+  // Called on each X4-pattern laid out, the first Steiner point x joining notches[0] and notches[1],
+  // the second y joining notches[2] and notches[3]; throws std::logic_error if it is not one. A
+  // variant whose x4_term returns only tested patterns need not check again.
+  virtual void check_x4(const std::array<int, 4>& /*notches*/, const QPoint& /*x*/, const QPoint& /*y*/) {}
 
   int S(int i, int j) const { return i >= j ? 0 : best_[at(i, j)].count; }
   Patterns& patterns() { return patterns_; }
@@ -292,6 +296,7 @@ class Program {
         const VertexId a = steiner(d, b.first), c = steiner(d, b.second);
         const std::array<int, 2> at_first = b.wrapped ? std::array<int, 2>{k, l} : std::array<int, 2>{i, k};
         const std::array<int, 2> at_second = b.wrapped ? std::array<int, 2>{j, i} : std::array<int, 2>{l, j};
+        check_x4({at_first[0], at_first[1], at_second[0], at_second[1]}, b.first, b.second);
         for (int n : at_first) d.add_cut(vertex(n), a);
         for (int n : at_second) d.add_cut(vertex(n), c);
         d.add_cut(a, c);

@@ -62,8 +62,8 @@
 //     exactly the set; P1 makes them a range from one end of it (the walk's steps), and the query's
 //     witness is the first Y of that range, in order from that end, that passes P4, XY in P. The Y
 //     that X sees are a range of places (6), found with geodesics (7), so the witness is one nearest
-//     member of the set. Soundness: every witness satisfies all of (4), which chosen() checks again
-//     in full before the layout (a failure throws: it would be a bug). Completeness over loose pairs:
+//     member of the set. Soundness: every witness satisfies all of (4), which is checked again in
+//     full on every pattern laid out (check_x4; a failure throws: it would be a bug). Completeness over loose pairs:
 //     by (4), every loose pair with the four conditions lies in its query's range, so the query finds
 //     it unless it found an earlier witness.
 // (6) What X sees of H (not in the OCR text, whose "2-way scans" stop before saying how; proven here).
@@ -145,8 +145,8 @@
 //   funnels of (7) compute those entries as the scans need them and store none, but their geodesic
 //   trees cost O(n r + r^2 log n), where Algorithm CD's preprocessing of the polygon is
 //   O(n + r^2 log n).
-//   chosen()'s full check still tests P4 as a segment search on the boundary's convex chains
-//   (algorithms/boundary_chains.h), O(r log(n/r)) per test, for O(r^2) chosen patterns. Measured at
+//   The check of the patterns laid out (check_x4) tests P4 as a segment search on the boundary's
+//   convex chains (algorithms/boundary_chains.h), O(r log(n/r)) for each of O(r) patterns. Measured at
 //   e6bf1f2 (seed 1, `polydecomp run --json`; "x4_p4_tests" / "x4_funnel_steps", seconds; in brackets
 //   the walks with segment searches that (7) replaced: their tests, seconds): notch-heavy n = 50, 100,
 //   200, 400: 8,136 / 11,359, 0.05 s; 77,542 / 111,774, 0.30 s; 638,076 / 934,447, 1.45 s; 5,216,414 /
@@ -155,15 +155,17 @@
 //   81,892 / 184,936, 4.21 s (8,084 and 58,858 tests; 4.1-4.7 s at r = 200, where STEP 2's X3 tests
 //   take most of the time).
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
-//   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (visibility in place of
-//   superranges; see chazelle_dobkin_patterns.h).
+//   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5, but the views across the
+//   notches come from walks of the triangulation the geodesic trees use (Views::kTriangulation, in
+//   place of superranges; see chazelle_dobkin_patterns.h).
 //
 // Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists, O(n + r log n) for each
 // of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
 // O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for r < 32768), O(r^3)
-// over the O(r^2) intervals; chosen()'s checks O(r^3 log(n/r)). Worst case O(n log n + n r + r^3 +
-// r^3 log(n/r)). Space O(n r) for the trees, O(r^3) for the rows (a row per interval with a witness)
-// and O(r^2) rationals for the lists and loose points. Pre: a simple counter-clockwise polygon with
+// over the O(r^2) intervals; the checks of the O(r) patterns laid out O(r^2 log(n/r)); STEP 5
+// O(n + r^2 log(n/r)) (chazelle_dobkin.h). Worst case O(n log n + n r + r^3) (r^2 log n is at most
+// n log n when r^2 <= n and O(r^3) otherwise). Space O(n r) for the trees, O(r^3) for the rows (a row
+// per interval with a witness) and O(r^2) rationals for the lists and loose points. Pre: a simple counter-clockwise polygon with
 // fewer than 32768 notches. Output: an optimal convex decomposition (OPT = r + 1 - the most compatible
 // patterns) under A18', Steiner points exact.
 //
@@ -192,7 +194,7 @@ Decomposition chazelle_dobkin(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*log(n)+n*r+r^3+r^3*log(n/r)", "== OPT",
+REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*log(n)+n*r+r^3", "== OPT",
                              "Chazelle thesis (000) Sec. 2.4, Def. 2.4, Thm 18, Lemma 9", 20000, chazelle_dobkin});
 
 }  // namespace pd

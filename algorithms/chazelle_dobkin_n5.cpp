@@ -9,12 +9,14 @@
 // with Theorem 15's O(r log(n/r)) test. A candidate is tried only when its count would beat the best so
 // far, so the tests actually made are often far fewer. Past its O(1) angle tests, a candidate's
 // segments are tested against the boundary's convex chains, O(r log(n/r)) (Theorem 15).
-// Deviation: superranges are replaced by visibility from each notch (chazelle_dobkin_patterns.h), so
-// the preprocessing is O(n log n + n r) where the thesis has O(n + r^2 log n).
+// Deviation: superranges are replaced by ray shooting from each notch (Views::kRayShooting,
+// chazelle_dobkin_patterns.h), so the preprocessing is O(n + r^3 log n) where the thesis has
+// O(n + r^2 log n); Theorem 17's bound is unchanged.
 //
-// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^4) pattern tests: the X3 tests of STEPs 2 and
-// 4 O(r^3), O(1) each (chazelle_dobkin.h); the X4 tests O(r^4), each O(1) or, past the constant-time
-// tests, O(r log(n/r)): O(n log n + n r + r^5 log(n/r)). Space O(r^2 + n). Pre: a
+// Time: O(n + r^3 log n) preprocessing, O(r^4) pattern tests: the X3 tests of STEPs 2 and 4 O(r^3),
+// O(1) each (chazelle_dobkin.h); the X4 tests O(r^4), each O(1) or, past the constant-time tests,
+// O(r log(n/r)); STEP 5 O(n + r^2 log(n/r)): O(n + r^5 log(n/r)) (Theorem 17; r^3 log n is
+// O(n + r^5 log(n/r))). Space O(r^2 + n). Pre: a
 // simple counter-clockwise polygon. Output: an optimal convex decomposition (OPT = r + 1 - the most
 // compatible patterns), Steiner points exact.
 #include "algorithms/chazelle_dobkin.h"
@@ -44,7 +46,7 @@ Decomposition chazelle_dobkin_n5(const Polygon& p, Counters& counters) { return 
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin-n5", Kind::Convex, true, true, "n*log(n)+n*r+r^5*log(n/r)", "== OPT",
+REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin-n5", Kind::Convex, true, true, "n+r^5*log(n/r)", "== OPT",
                              "Chazelle thesis (000) Sec. 2.3, Thms 13-17", 20000, chazelle_dobkin_n5});
 
 }  // namespace pd

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 
@@ -145,7 +147,7 @@ std::vector<QPoint> exact_vertices(const Polygon& p) {
 
 }  // namespace
 
-Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segments_(p, exact_), visibility_(p) {
+Patterns::Patterns(const Polygon& p, Views views) : p_(p), exact_(exact_vertices(p)), segments_(p, exact_) {
   for (std::size_t v = 0; v < p.size(); ++v)
     if (p.is_reflex(v)) notches_.push_back(static_cast<VertexId>(v));
   const std::size_t r = notches_.size();
@@ -154,13 +156,18 @@ Patterns::Patterns(const Polygon& p) : p_(p), exact_(exact_vertices(p)), segment
   tip_known_.assign(r * r, 0);
   tip_.assign(r * r, std::nullopt);
   compute_bare_cones();
-  if (r == 0) return;
+  if (views == Views::kTriangulation) views_from_triangulation();
+  else if (r > 0) views_by_ray_shooting();
+}
+
+void Patterns::views_from_triangulation() {
+  visibility_.emplace(p_);
   std::vector<std::uint32_t> visible, seen;
   std::int64_t triangles = 0;
-  for (std::size_t i = 0; i < r; ++i) {
+  for (std::size_t i = 0; i < notches_.size(); ++i) {
     visible.clear();
     seen.clear();
-    visibility_.visible_from(notches_[i], visible, triangles, &seen);
+    visibility_->visible_from(notches_[i], visible, triangles, &seen);
     compute_transitions(i, visible, seen);
   }
 }
@@ -192,6 +199,138 @@ void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint
     transition_[from * r + k] = through;
     const bool adjacent = offset(w) == 1 || offset(w) == n - 1;
     sees_notch_[from * r + k] = x == w && !adjacent;
+  }
+}
+
+namespace {
+
+// Where the direction from `from` to `to` goes on at vertex u of p: strictly into P's interior, along
+// u's forward edge (to u + 1) or its backward edge, or out of P.
+enum class Heading : std::uint8_t { kInto, kAlongForward, kAlongBackward, kOut };
+
+Heading heading_at(const Polygon& p, std::size_t u, const Point& from, const Point& to) {
+  const Point &o = p[u], &after = p[p.next(u)], &before = p[p.prev(u)];
+  const int f_d = cross_sign(o, after, from, to), d_b = cross_sign(from, to, o, before);
+  if (f_d == 0 && dot_sign(o, after, from, to) > 0) return Heading::kAlongForward;
+  if (d_b == 0 && dot_sign(o, before, from, to) > 0) return Heading::kAlongBackward;
+  const bool into = p.is_reflex(u) ? !(d_b <= 0 && f_d <= 0) : f_d > 0 && d_b > 0;
+  return into ? Heading::kInto : Heading::kOut;
+}
+
+constexpr VertexId kNoWindow = static_cast<VertexId>(-1);
+
+}  // namespace
+
+// For each vertex u, the far end of the straight run of edges from u forwards (through 180-degree
+// vertices), and backwards: O(n), so that a ray running along the boundary skips a run in O(1).
+Patterns::StraightRuns::StraightRuns(const Polygon& p) : forward(p.size()), backward(p.size()) {
+  const std::size_t n = p.size();
+  auto straight = [&](std::size_t w) {
+    return orient(p[p.prev(w)], p[w], p[p.next(w)]) == 0 && dot_sign(p[p.prev(w)], p[w], p[w], p[p.next(w)]) > 0;
+  };
+  std::size_t bend = 0;  // a vertex that is not straight (a polygon has three)
+  while (straight(bend)) ++bend;
+  // Each run ends at a bend, so each entry reads one computed before it: from the bend outwards.
+  for (std::size_t k = 1; k <= n; ++k) {
+    const std::size_t u = (bend + n - k) % n, w = p.next(u);
+    forward[u] = static_cast<VertexId>(straight(w) ? forward[w] : w);
+  }
+  for (std::size_t k = 1; k <= n; ++k) {
+    const std::size_t u = (bend + k) % n, w = p.prev(u);
+    backward[u] = static_cast<VertexId>(straight(w) ? backward[w] : w);
+  }
+}
+
+void Patterns::views_by_ray_shooting() {
+  RayShooter shooter(p_);
+  const StraightRuns runs(p_);
+  for (std::size_t i = 0; i < notches_.size(); ++i) compute_transitions(i, shooter, runs);
+  view_probes_ = shooter.probes();
+}
+
+// The views from notch `from` by ray shooting. As a ray from the notch turns counter-clockwise, the
+// boundary point it meets first moves forward along the boundary, jumping where the ray touches a
+// vertex and goes on into P: the boundary between that vertex and the ray's next contact (on the side
+// away from the notch) is a pocket hidden behind the window between them, and the notch's view passes
+// across every position in it along that ray (the walk's x or y, compute_transitions above). Such a
+// ray runs through a notch the notch sees (a window can only go on past a reflex vertex, or along the
+// boundary where vertices lie on the ray) or along one of the notch's edges, so the rays towards every
+// other notch and along the two edges find every window; a ray is followed past each vertex it touches
+// into P, and the vertices it meets beyond its first contact are hidden too. A notch w is then seen
+// (its ray meets nothing before it), an edge's end, on a ray past its first contact, or inside a
+// pocket. Rays along one direction are followed once. A ray goes on into P only past a reflex vertex
+// (the end of a straight run included), so the shots are O(r) rays and at most one per notch met
+// beyond a first contact, each O(r log n) (ray_shooting.h): O(r^2 log n) per notch, and the O(r)
+// pockets are searched in O(r) per notch w.
+void Patterns::compute_transitions(std::size_t from, RayShooter& shooter, const StraightRuns& runs) {
+  const std::size_t n = p_.size(), r = notches_.size();
+  const VertexId v = notches_[from];
+  // Boundary positions counted from the notch: 2 per vertex, odd inside an edge.
+  auto position = [&](std::size_t u, bool inside_edge) { return 2 * ((u + n - v) % n) + (inside_edge ? 1 : 0); };
+  auto notch_at = [&](std::size_t u) -> std::optional<std::size_t> {
+    const auto it = std::lower_bound(notches_.begin(), notches_.end(), u);
+    if (it == notches_.end() || *it != u) return std::nullopt;
+    return static_cast<std::size_t>(it - notches_.begin());
+  };
+  struct Pocket {
+    std::size_t lo, hi;  // open range of positions
+    VertexId through;
+  };
+  std::vector<Pocket> pockets;
+  std::vector<VertexId> on_ray(r, kNoWindow);  // notches met on a ray beyond its first contact
+  std::vector<char> seen(r, 0);
+  auto met = [&](std::size_t u, VertexId through) {
+    if (const auto k = notch_at(u)) on_ray[*k] = through;
+  };
+  std::vector<VertexId> followed;
+  // The ray from the notch through vertex c, followed to its end, unless it was followed already.
+  auto follow = [&](VertexId c) {
+    const Heading start = heading_at(p_, v, p_[v], p_[c]);
+    if (start == Heading::kOut) return;
+    for (VertexId d : followed)
+      if (orient(p_[v], p_[d], p_[c]) == 0 && dot_sign(p_[v], p_[d], p_[v], p_[c]) > 0) return;
+    followed.push_back(c);
+    std::size_t u = start == Heading::kAlongForward ? next(v) : prev(v);
+    if (start == Heading::kInto) {
+      ++view_shots_;
+      const auto hit = shooter.shoot(v, c, true);
+      if (!hit || !hit->at_vertex) return;  // it ends inside an edge: nothing hidden along it
+      u = hit->vertex;
+      if (const auto k = notch_at(u)) seen[*k] = 1;  // through the interior: a diagonal
+    }
+    for (;;) {
+      Heading on = heading_at(p_, u, p_[v], p_[c]);
+      if (on == Heading::kAlongForward || on == Heading::kAlongBackward) {
+        // Along the boundary to the run's end (the vertices between are straight, so not notches).
+        u = on == Heading::kAlongForward ? runs.forward[u] : runs.backward[u];
+        met(u, c);
+        on = heading_at(p_, u, p_[v], p_[c]);
+      }
+      if (on != Heading::kInto) return;
+      ++view_shots_;
+      const auto hit = shooter.shoot(u, v, false);
+      if (!hit) throw std::logic_error("chazelle-dobkin: a ray into P meets no boundary");
+      const std::size_t a = position(u, false), b = position(hit->vertex, !hit->at_vertex);
+      pockets.push_back({std::min(a, b), std::max(a, b), c});
+      if (!hit->at_vertex) return;
+      u = hit->vertex;
+      met(u, c);
+    }
+  };
+  for (std::size_t k = 0; k < r; ++k)
+    if (k != from) follow(notches_[k]);
+  follow(next(v));
+  follow(prev(v));
+  for (std::size_t k = 0; k < r; ++k) {
+    if (k == from) continue;
+    const VertexId w = notches_[k];
+    const bool adjacent = w == next(v) || w == prev(v);
+    VertexId through = adjacent || seen[k] ? w : on_ray[k];
+    for (std::size_t q = 0; q < pockets.size() && through == kNoWindow; ++q)
+      if (pockets[q].lo < position(w, false) && position(w, false) < pockets[q].hi) through = pockets[q].through;
+    if (through == kNoWindow) throw std::logic_error("chazelle-dobkin: no window hides a notch");
+    transition_[from * r + k] = through;
+    sees_notch_[from * r + k] = seen[k] && !adjacent;
   }
 }
 
@@ -371,6 +510,10 @@ void Patterns::report(Counters& counters) const {
   counters["tips"] += tips_;
   counters["tips_found"] += tips_found_;
   counters["segment_search_steps"] += segments_.steps();
+  if (!visibility_) {
+    counters["view_shots"] += view_shots_;
+    counters["view_probes"] += view_probes_;
+  }
 }
 
 }  // namespace pd::cd

@@ -67,17 +67,27 @@
 //     in the cone between the extensions of A's two notch edges beyond A, and likewise at B); edges
 //     that would pass through a vertex of P are refused, as the thesis assumes no reduction meets a
 //     notch (the pattern then reduces to a Y-pattern, found as such).
-// Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains) are replaced by the
-// visibility of every vertex from each notch (algorithms/visibility.h, O(n) per notch after an
-// O(n log n) triangulation): the transitions are read from it by binary search, O(r^2 log n) in all.
-// So the preprocessing is O(n log n + n r) where the thesis has O(n + r^2 log n); every test after it
-// costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the boundary in X4's
-// tips and tests).
+// Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains) are replaced by one of
+// two sources of the same views across the notches (Views; a test holds them to each other on every
+// pair of notches, degenerate lattice polygons included):
+//   - ray shooting (chazelle-dobkin-n5): from each notch, the rays towards every other notch and along
+//     its two edges, each followed past the vertices it touches into P; the boundary between a ray's
+//     consecutive contacts is a pocket the notch's view passes across along that ray
+//     (compute_transitions). O(r) rays and O(r) further contacts per notch, each O(r log n) on the
+//     boundary's convex arcs (algorithms/ray_shooting.h), straight runs of the boundary skipped in
+//     O(1): O(n + r^3 log n) in all where Theorem 11 gives O(n + r^2 log n), still within Theorem
+//     17's O(n + r^5 log(n/r));
+//   - walks of a triangulation (chazelle-dobkin, whose geodesic trees walk the same triangulation):
+//     the visibility of every vertex from each notch (algorithms/visibility.h, O(n) per notch after an
+//     O(n log n) triangulation), the transitions read from it by binary search: O(n log n + n r).
+// Every test after it costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the
+// boundary in X4's tips and tests).
 //
 // Exact: every test is an orientation on exact rationals; Steiner points are exact rationals.
 #pragma once
 
 #include "algorithms/boundary_chains.h"
+#include "algorithms/ray_shooting.h"
 #include "algorithms/visibility.h"
 #include "core/registry.h"
 
@@ -116,11 +126,16 @@ struct Joint {
   IntervalKernel::Point_2 lower_approx, upper_approx;
 };
 
+// Where the views across the notches (transition) come from: ray shooting on the boundary's convex
+// arcs, O(n + r^3 log n) in all (chazelle-dobkin-n5); or walks of a triangulation that the caller
+// also uses, O(n log n + n r) (chazelle-dobkin). Both give the same directions (a test holds them to
+// each other).
+enum class Views : std::uint8_t { kRayShooting, kTriangulation };
+
 class Patterns {
  public:
-  // Notches, the boundary's convex chains (O(n)) and visibility from each notch: O(n log n + n r +
-  // r^2 log n).
-  explicit Patterns(const Polygon& p);
+  // Notches, the boundary's convex chains (O(n)) and the views from each notch across every other.
+  explicit Patterns(const Polygon& p, Views views = Views::kRayShooting);
   // The chain search refers to this object's rational vertices.
   Patterns(const Patterns&) = delete;
   Patterns& operator=(const Patterns&) = delete;
@@ -176,23 +191,36 @@ class Patterns {
   // Whether the closed segment st, between interior points, avoids P's boundary. O(r log(n/r)).
   bool inside(const QPoint& s, const QPoint& t) const;
 
-  // P's triangulation, with visibility from its vertices (algorithms/visibility.h).
-  const VisibilityGraph& triangulation() const { return visibility_; }
+  // P's triangulation, with visibility from its vertices (algorithms/visibility.h). Pre: built with
+  // Views::kTriangulation.
+  const VisibilityGraph& triangulation() const { return *visibility_; }
+
+  // A vertex on the ray from notch `from` along which its view passes across notch `towards`'s
+  // boundary position: `towards` itself when from sees it (a diagonal or an edge), else the window
+  // whose pocket hides it (see the header comment). Only the ray's direction is meant.
+  VertexId transition(std::size_t from, std::size_t towards) const {
+    return transition_[from * notches_.size() + towards];
+  }
 
   // Counts "x2_tests", "x2_found", "x3_tests", "x3_found", "x4_tests", "x4_found", "tips" (computed),
   // "tips_found" (that exist), "segment_search_steps" (boxes of the chains' hierarchy visited,
-  // binary-search steps and vertices tested by sees and inside).
+  // binary-search steps and vertices tested by sees and inside); with Views::kRayShooting also
+  // "view_shots" (rays shot for the views) and "view_probes" (the shooter's tests on its arcs).
   void report(Counters& counters) const;
 
  private:
   const QPoint& at(VertexId v) const { return exact_[v]; }
   VertexId next(VertexId v) const { return static_cast<VertexId>(p_.next(v)); }
   VertexId prev(VertexId v) const { return static_cast<VertexId>(p_.prev(v)); }
-  VertexId transition(std::size_t from, std::size_t towards) const {
-    return transition_[from * notches_.size() + towards];
-  }
   void compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible,
                            const std::vector<std::uint32_t>& seen);
+  void views_from_triangulation();
+  void views_by_ray_shooting();
+  struct StraightRuns {
+    explicit StraightRuns(const Polygon& p);
+    std::vector<VertexId> forward, backward;
+  };
+  void compute_transitions(std::size_t from, RayShooter& shooter, const StraightRuns& runs);
   void compute_bare_cones();
   Joint cone(const AdaptedNotch& a) const;
   std::vector<QPoint> x3_region(const std::array<const Joint*, 3>& joints) const;
@@ -202,7 +230,7 @@ class Patterns {
   const Polygon& p_;
   std::vector<QPoint> exact_;
   mutable boundary::SegmentSearch segments_;  // P's boundary in convex chains, for sees and inside
-  VisibilityGraph visibility_;                // and its triangulation
+  std::optional<VisibilityGraph> visibility_;  // with Views::kTriangulation
   std::vector<VertexId> notches_;
   // Per notch: the bare notch, its joint and its two branches.
   std::vector<AdaptedNotch> bare_;
@@ -215,7 +243,7 @@ class Patterns {
   std::vector<char> tip_known_;
   std::vector<std::optional<QPoint>> tip_;
   std::int64_t x2_tests_ = 0, x2_found_ = 0, x3_tests_ = 0, x3_found_ = 0;
-  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0, tips_found_ = 0;
+  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0, tips_found_ = 0, view_shots_ = 0, view_probes_ = 0;
 };
 
 }  // namespace pd::cd

@@ -220,7 +220,7 @@ class ProgramCubic final : public Program {
   enum class P4Test { kGeodesics, kSegmentSearch };
 
   explicit ProgramCubic(const Polygon& p, P4Test p4_test = P4Test::kGeodesics)
-      : Program(p), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
+      : Program(p, Views::kTriangulation), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
         rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)), p4_test_(p4_test),
         geodesics_(p, patterns().triangulation(), rays_.terminals()) {}
 
@@ -407,11 +407,11 @@ class ProgramCubic final : public Program {
     return std::nullopt;
   }
 
+  // The witness's Steiner points; Lemma 9 is checked on the patterns laid out (check_x4).
   X4Choice chosen(int count, const std::array<int, 4>& notches, std::uint8_t sides, bool wrapped) {
     const auto [q, g, m, h] = notches;
     const QPoint x = rays_.point(ray(g, sides, 1), ray(q, sides, 0));
     const QPoint y = rays_.point(ray(h, sides, 3), ray(m, sides, 2));
-    if (!is_x4(notches, x, y)) throw std::logic_error("chazelle-dobkin: an X4 witness fails Lemma 9");
     ++chosen_;
     chosen_from_w_ += wrapped;
     if (wrapped) return X4Choice{count, m, h, true, y, x};
@@ -419,6 +419,13 @@ class ProgramCubic final : public Program {
   }
 
   static int ray(int notch, std::uint8_t sides, int bit) { return 2 * notch + ((sides >> bit) & 1); }
+
+  // Only the O(r) patterns laid out are checked, O(r log(n/r)) each: an interval's witness that no
+  // layout uses changes no count the output reaches (the program checks that the patterns laid out
+  // add up to S(0, r-1)).
+  void check_x4(const std::array<int, 4>& notches, const QPoint& x, const QPoint& y) override {
+    if (!is_x4(notches, x, y)) throw std::logic_error("chazelle-dobkin: an X4 witness fails Lemma 9");
+  }
 
   // Lemma 9 on the loose pair, checked in full and independently of the scan: every angle at X and Y
   // below 180 degrees, each notch's edge in its closed range and in P, the edges meeting only at X and

@@ -39,6 +39,13 @@ Decomposition naive_decomposition(const Polygon& p, Counters& counters);
 Decomposition naive_complete(const Polygon& p, Decomposition d, const std::vector<VertexId>& notches,
                              Counters& counters);
 
+// naive_complete with the boundary searched through its convex chains (naive_chains.cpp, Theorem 4):
+// O(n) to cut the boundary into chains, then O(r log(n/r)) per listed notch against the boundary
+// and O(k) against the k segments of d and of the notches resolved before it. The same decomposition.
+// Counts "pseudo_notches", "chain_searches" and "binary_search_steps" in place of "edge_tests".
+Decomposition naive_complete_chains(const Polygon& p, Decomposition d, const std::vector<VertexId>& notches,
+                                    Counters& counters);
+
 // The graph representation of a decomposition (thesis, "How do we represent a convex
 // decomposition?"): adjacency lists of the plane graph of P's boundary and the cuts, every vertex of
 // degree 2 or 3 (fact 2 of Sec. 2.2.1), each list in counter-clockwise order.

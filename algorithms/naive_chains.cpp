@@ -148,17 +148,26 @@ class ChainSearch : public naive::BoundarySearch {
   std::int64_t steps_ = 0, searches_ = 0;
 };
 
-Decomposition naive_chains(const Polygon& p, Counters& counters) {
-  std::vector<VertexId> notches;
+}  // namespace
+
+Decomposition naive_complete_chains(const Polygon& p, Decomposition d, const std::vector<VertexId>& notches,
+                                    Counters& counters) {
+  std::vector<VertexId> all_notches;
   std::vector<Chain> chains;
-  boundary::split_into_chains(p, notches, chains);
+  boundary::split_into_chains(p, all_notches, chains);
   const std::int64_t pseudo_notches = static_cast<std::int64_t>(chains.size());
   ChainSearch search(p, std::move(chains));
-  Decomposition d = naive::resolve(p, Decomposition{}, notches, search, counters);
+  Decomposition out = naive::resolve(p, std::move(d), notches, search, counters);
   counters["pseudo_notches"] = pseudo_notches;
   counters["chain_searches"] = search.searches();
   counters["binary_search_steps"] = search.steps();
-  return d;
+  return out;
+}
+
+namespace {
+
+Decomposition naive_chains(const Polygon& p, Counters& counters) {
+  return naive_complete_chains(p, Decomposition{}, naive::notches_of(p), counters);
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include "generators/family.h"
 #include "generators/rng.h"
 #include "tests/brute_force.h"
+#include "tests/lattice_polygons.h"
 
 #include <CGAL/Polygon_2_algorithms.h>
 
@@ -32,6 +33,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
+#include <random>
 
 #include <string>
 #include <vector>
@@ -185,6 +188,42 @@ bool is_x3_steiner(const Polygon& p, const std::array<VertexId, 3>& v, const QPo
     }
   }
   return true;
+}
+
+// The two sources of the views (cd::Views), ray shooting on the boundary's arcs and walks of the
+// triangulation, share no code: they agree on every ordered pair of notches (the same diagonals, and
+// views across along the same ray from the notch), on the families and on degenerate lattice polygons
+// where rays touch vertices, run along edges and pass 180-degree vertices.
+TEST(ChazelleDobkinPatterns, RayShootingAndTheTriangulationGiveTheSameViews) {
+  std::size_t pairs = 0, hidden = 0;
+  auto compare = [&](const Polygon& p, const std::string& where) {
+    const cd::Patterns by_rays(p, cd::Views::kRayShooting), by_walks(p, cd::Views::kTriangulation);
+    const auto& notches = by_rays.notches();
+    for (std::size_t a = 0; a < notches.size(); ++a)
+      for (std::size_t b = 0; b < notches.size(); ++b) {
+        if (a == b) continue;
+        ++pairs;
+        EXPECT_EQ(by_rays.diagonal(a, b), by_walks.diagonal(a, b)) << where << " notches " << a << ", " << b;
+        const Point &z = p[notches[a]], &x = p[by_rays.transition(a, b)], &y = p[by_walks.transition(a, b)];
+        hidden += by_walks.transition(a, b) != notches[b];
+        EXPECT_TRUE(orient(z, x, y) == 0 && dot_sign(z, x, z, y) > 0)
+            << where << " notches " << a << ", " << b << ": views through " << by_rays.transition(a, b) << " and "
+            << by_walks.transition(a, b);
+      }
+  };
+  for (const Family& f : families())
+    for (std::size_t n : {20, 60, 120})
+      for (std::uint64_t seed : {1, 2, 3}) {
+        const std::size_t r = f.default_reflex(n);
+        if (!f.infeasible(n, r)) compare(Polygon::make(generate(f.name, n, r, seed)), label({f.name, n, r, seed}));
+      }
+  std::mt19937 rng(11);
+  for (int round = 0; round < 1000; ++round)
+    compare(lattice::lattice_polygon(8 + round % 17, 5 + round % 4, rng), "lattice polygon " + std::to_string(round));
+  for (int round = 0; round < 1000; ++round)
+    if (const std::optional<Polygon> p = lattice::notched_rectangle(rng)) compare(*p, "notched rectangle " + std::to_string(round));
+  EXPECT_GT(pairs, 100000u);
+  EXPECT_GT(hidden, 50000u);
 }
 
 // Where the detector finds no X3, no point of a grid over the triangle is an X3 Steiner point.

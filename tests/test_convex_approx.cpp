@@ -206,6 +206,37 @@ TEST(NaiveChains, EqualsNaiveAndKeepsThePseudoNotchBound) {
   EXPECT_GT(cases, 100u);
 }
 
+// Chazelle-Dobkin's STEP 5: completing a decomposition that already has cuts and Steiner points (here
+// the naive segments of every other notch) through the chains gives naive_complete's segments.
+TEST(NaiveChains, CompletesAGivenDecompositionAsNaiveDoes) {
+  std::size_t cases = 0;
+  for (const Family& f : families())
+    for (std::size_t n : {13, 60, 250})
+      for (std::uint64_t seed : {1, 2}) {
+        const std::size_t r = f.default_reflex(n);
+        if (f.infeasible(n, r)) continue;
+        const Polygon p = Polygon::make(generate(f.name, n, r, seed));
+        const std::vector<VertexId> notches = naive::notches_of(p);
+        std::vector<VertexId> first, rest;
+        for (std::size_t k = 0; k < notches.size(); ++k) (k % 2 ? rest : first).push_back(notches[k]);
+        Counters counters;
+        const Decomposition given = naive_complete(p, Decomposition{}, first, counters);
+        const Decomposition a = naive_complete(p, given, rest, counters);
+        const Decomposition b = naive_complete_chains(p, given, rest, counters);
+        const std::string label = f.name + " n=" + std::to_string(n) + " seed=" + std::to_string(seed);
+        ASSERT_EQ(a.steiner.size(), b.steiner.size()) << label;
+        for (std::size_t k = 0; k < a.steiner.size(); ++k) {
+          EXPECT_EQ(a.steiner[k].point, b.steiner[k].point) << label << " Steiner point " << k;
+          EXPECT_EQ(a.steiner[k].boundary_edge, b.steiner[k].boundary_edge) << label << " Steiner point " << k;
+        }
+        ASSERT_EQ(a.cuts.size(), b.cuts.size()) << label;
+        for (std::size_t k = 0; k < a.cuts.size(); ++k)
+          EXPECT_TRUE(a.cuts[k].a == b.cuts[k].a && a.cuts[k].b == b.cuts[k].b) << label << " cut " << k;
+        cases += !rest.empty();
+      }
+  EXPECT_GT(cases, 40u);
+}
+
 // Figure 2.6 by hand: a 12-gon with one vertex pushed in, a notch at (500,0). From the notch the
 // boundary stays left of the notch's outgoing edge through (-500,-866), so the first chain has 8 edges
 // (the next vertex, (0,-1000), would make the chain's angle at the notch reflex); the second chain

@@ -8,6 +8,7 @@
 #include "core/validate.h"
 #include "generators/family.h"
 #include "tests/brute_force.h"
+#include "tests/lattice_polygons.h"
 #include "tests/reliability.h"
 
 #include <CGAL/CORE_Expr.h>
@@ -22,6 +23,8 @@ namespace pd {
 namespace {
 
 using reliability::is_peer;
+using lattice::lattice_polygon;
+using lattice::notched_rectangle;
 
 std::vector<const Algorithm*> registered_optimal_programs() {
   std::vector<const Algorithm*> out;
@@ -83,33 +86,6 @@ std::vector<std::pair<std::string, Polygon>> hand_made() {
       {"cross through reflex vertices",
        polygon({{0, 0}, {3, 0}, {3, 1}, {4, 1}, {4, 2}, {3, 2}, {3, 3}, {0, 3}, {0, 2}, {-1, 2}, {-1, 1}, {0, 1}})},
   };
-}
-
-// A random simple polygon on a small lattice, grown from a triangle by replacing an edge ab with a, c, b
-// for a random lattice point c while the result stays simple: collinear vertices, vertices on the
-// extensions of edges and diagonals, and 180-degree vertices are everywhere.
-Polygon lattice_polygon(std::size_t n, int grid, std::mt19937& rng) {
-  std::uniform_int_distribution<int> coord(0, grid - 1);
-  while (true) {
-    std::vector<Point> ring;
-    for (int k = 0; k < 3; ++k) ring.emplace_back(coord(rng), coord(rng));
-    try {
-      Polygon::make(ring);
-    } catch (const PolygonError&) {
-      continue;
-    }
-    for (int attempt = 0; ring.size() < n && attempt < 400; ++attempt) {
-      std::vector<Point> grown = ring;
-      const auto at = std::uniform_int_distribution<std::size_t>(0, ring.size() - 1)(rng);
-      grown.insert(grown.begin() + static_cast<std::ptrdiff_t>(at) + 1, Point(coord(rng), coord(rng)));
-      try {
-        Polygon::make(grown);
-        ring = grown;
-      } catch (const PolygonError&) {
-      }
-    }
-    if (ring.size() == n) return Polygon::make(ring);
-  }
 }
 
 std::vector<Point> rotated(const Polygon& p, std::size_t by) {
@@ -187,42 +163,6 @@ TEST(BruteForce, AgreesOnRandomLatticePolygons) {
     const std::size_t n = 5 + round % 8;
     const Polygon p = lattice_polygon(n, 4 + round % 3, rng);
     expect_brute_force_agrees_on_every_rotation(p, "lattice polygon " + std::to_string(round));
-  }
-}
-
-// A rectangle with every lattice point of its boundary as a vertex, a few of them moved off the
-// boundary (notches and bumps), and some of the rest dropped: long runs of 180-degree vertices, and
-// edge and diagonal extensions that end exactly at vertices.
-std::optional<Polygon> notched_rectangle(std::mt19937& rng) {
-  const int w = 3 + static_cast<int>(rng() % 8), h = 3 + static_cast<int>(rng() % 8);
-  std::vector<std::pair<int, int>> ring;
-  for (int x = 0; x < w; ++x) ring.emplace_back(x, 0);
-  for (int y = 0; y < h; ++y) ring.emplace_back(w, y);
-  for (int x = w; x > 0; --x) ring.emplace_back(x, h);
-  for (int y = h; y > 0; --y) ring.emplace_back(0, y);
-  auto points = [](const std::vector<std::pair<int, int>>& xy) {
-    std::vector<Point> out;
-    for (auto [x, y] : xy) out.emplace_back(x, y);
-    return out;
-  };
-  for (int k = 1 + static_cast<int>(rng() % 5); k > 0; --k) {
-    const auto before = ring;
-    auto& v = ring[rng() % ring.size()];
-    v.first += static_cast<int>(rng() % 5) - 2;
-    v.second += static_cast<int>(rng() % 5) - 2;
-    try {
-      Polygon::make(points(ring));
-    } catch (const PolygonError&) {
-      ring = before;
-    }
-  }
-  std::vector<std::pair<int, int>> kept;
-  for (const auto& v : ring)
-    if (rng() % 3 != 0) kept.push_back(v);
-  try {
-    return Polygon::make(points(kept));
-  } catch (const PolygonError&) {
-    return std::nullopt;
   }
 }
 
