@@ -94,7 +94,7 @@ struct Best {
 class Program {
  public:
   virtual ~Program() = default;
-  explicit Program(const Polygon& p, Views views = Views::kRayShooting)
+  explicit Program(const Polygon& p, Views views = Views::kCheaperBound)
       : p_(p), patterns_(p, views), r_(static_cast<int>(patterns_.notches().size())),
         best_(static_cast<std::size_t>(r_) * r_), b_(best_.size()), f_(best_.size()), b_joint_(best_.size()),
         f_joint_(best_.size()) {}

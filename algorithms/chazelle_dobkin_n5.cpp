@@ -9,9 +9,10 @@
 // with Theorem 15's O(r log(n/r)) test. A candidate is tried only when its count would beat the best so
 // far, so the tests actually made are often far fewer. Past its O(1) angle tests, a candidate's
 // segments are tested against the boundary's convex chains, O(r log(n/r)) (Theorem 15).
-// Deviation: superranges are replaced by ray shooting from each notch (Views::kRayShooting,
-// chazelle_dobkin_patterns.h), so the preprocessing is O(n + r^3 log n) where the thesis has
-// O(n + r^2 log n); Theorem 17's bound is unchanged.
+// Deviation: superranges are replaced by ray shooting from each notch or by a triangulation's walks,
+// whichever bound is smaller (Views::kCheaperBound, chazelle_dobkin_patterns.h), so the preprocessing
+// is O(min(n + r^3 log n, n log n + n r)) where the thesis has O(n + r^2 log n); Theorem 17's bound is
+// unchanged.
 //
 // Time: O(n + r^3 log n) preprocessing, O(r^4) pattern tests: the X3 tests of STEPs 2 and 4 O(r^3),
 // O(1) each (chazelle_dobkin.h); the X4 tests O(r^4), each O(1) or, past the constant-time tests,

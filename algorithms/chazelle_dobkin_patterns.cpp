@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
@@ -145,6 +146,13 @@ std::vector<QPoint> exact_vertices(const Polygon& p) {
   return exact;
 }
 
+// Whether n + r^3 log n, the views by ray shooting, is below n log n + n r, the triangulation's walks.
+bool rays_bound_is_smaller(std::size_t n, std::size_t r) {
+  const double log_n = std::log2(static_cast<double>(std::max<std::size_t>(n, 2)));
+  const double nd = static_cast<double>(n), rd = static_cast<double>(r);
+  return nd + rd * rd * rd * log_n < nd * log_n + nd * rd;
+}
+
 }  // namespace
 
 Patterns::Patterns(const Polygon& p, Views views) : p_(p), exact_(exact_vertices(p)), segments_(p, exact_) {
@@ -156,6 +164,8 @@ Patterns::Patterns(const Polygon& p, Views views) : p_(p), exact_(exact_vertices
   tip_known_.assign(r * r, 0);
   tip_.assign(r * r, std::nullopt);
   compute_bare_cones();
+  if (views == Views::kCheaperBound)
+    views = rays_bound_is_smaller(p.size(), r) ? Views::kRayShooting : Views::kTriangulation;
   if (views == Views::kTriangulation) views_from_triangulation();
   else if (r > 0) views_by_ray_shooting();
 }
@@ -252,16 +262,15 @@ void Patterns::views_by_ray_shooting() {
 // boundary point it meets first moves forward along the boundary, jumping where the ray touches a
 // vertex and goes on into P: the boundary between that vertex and the ray's next contact (on the side
 // away from the notch) is a pocket hidden behind the window between them, and the notch's view passes
-// across every position in it along that ray (the walk's x or y, compute_transitions above). Such a
-// ray runs through a notch the notch sees (a window can only go on past a reflex vertex, or along the
-// boundary where vertices lie on the ray) or along one of the notch's edges, so the rays towards every
-// other notch and along the two edges find every window; a ray is followed past each vertex it touches
-// into P, and the vertices it meets beyond its first contact are hidden too. A notch w is then seen
-// (its ray meets nothing before it), an edge's end, on a ray past its first contact, or inside a
-// pocket. Rays along one direction are followed once. A ray goes on into P only past a reflex vertex
-// (the end of a straight run included), so the shots are O(r) rays and at most one per notch met
-// beyond a first contact, each O(r log n) (ray_shooting.h): O(r^2 log n) per notch, and the O(r)
-// pockets are searched in O(r) per notch w.
+// across every position in it along that ray (the walk's x or y, compute_transitions above). A ray
+// goes on into P only past a reflex vertex, or along the boundary where vertices lie on it, so such a
+// ray runs through a notch the notch sees or along one of the notch's edges: following those rays
+// past every vertex they touch into P finds every window, and the vertices met beyond a first contact
+// are hidden too. A notch w is then seen, an edge's end, on a ray past its first contact, or inside a
+// pocket. The notches seen are found by two segment searches each (O(r log(n/r)),
+// boundary_chains.h); each ray followed is shot again past every notch it touches, once per notch
+// met, O(r log n) a shot (ray_shooting.h): O(r^2 log n) per notch, and the O(r) pockets are searched
+// in O(r) per notch w.
 void Patterns::compute_transitions(std::size_t from, RayShooter& shooter, const StraightRuns& runs) {
   const std::size_t n = p_.size(), r = notches_.size();
   const VertexId v = notches_[from];
@@ -282,45 +291,37 @@ void Patterns::compute_transitions(std::size_t from, RayShooter& shooter, const 
   auto met = [&](std::size_t u, VertexId through) {
     if (const auto k = notch_at(u)) on_ray[*k] = through;
   };
-  std::vector<VertexId> followed;
-  // The ray from the notch through vertex c, followed to its end, unless it was followed already.
-  auto follow = [&](VertexId c) {
-    const Heading start = heading_at(p_, v, p_[v], p_[c]);
-    if (start == Heading::kOut) return;
-    for (VertexId d : followed)
-      if (orient(p_[v], p_[d], p_[c]) == 0 && dot_sign(p_[v], p_[d], p_[v], p_[c]) > 0) return;
-    followed.push_back(c);
-    std::size_t u = start == Heading::kAlongForward ? next(v) : prev(v);
-    if (start == Heading::kInto) {
-      ++view_shots_;
-      const auto hit = shooter.shoot(v, c, true);
-      if (!hit || !hit->at_vertex) return;  // it ends inside an edge: nothing hidden along it
-      u = hit->vertex;
-      if (const auto k = notch_at(u)) seen[*k] = 1;  // through the interior: a diagonal
-    }
+  // The ray from the notch through `through`, from its first contact u on, followed to its end.
+  auto follow = [&](VertexId through, std::size_t u) {
     for (;;) {
-      Heading on = heading_at(p_, u, p_[v], p_[c]);
+      Heading on = heading_at(p_, u, p_[v], p_[through]);
       if (on == Heading::kAlongForward || on == Heading::kAlongBackward) {
         // Along the boundary to the run's end (the vertices between are straight, so not notches).
         u = on == Heading::kAlongForward ? runs.forward[u] : runs.backward[u];
-        met(u, c);
-        on = heading_at(p_, u, p_[v], p_[c]);
+        met(u, through);
+        on = heading_at(p_, u, p_[v], p_[through]);
       }
       if (on != Heading::kInto) return;
       ++view_shots_;
       const auto hit = shooter.shoot(u, v, false);
       if (!hit) throw std::logic_error("chazelle-dobkin: a ray into P meets no boundary");
       const std::size_t a = position(u, false), b = position(hit->vertex, !hit->at_vertex);
-      pockets.push_back({std::min(a, b), std::max(a, b), c});
+      pockets.push_back({std::min(a, b), std::max(a, b), through});
       if (!hit->at_vertex) return;
       u = hit->vertex;
-      met(u, c);
+      met(u, through);
     }
   };
-  for (std::size_t k = 0; k < r; ++k)
-    if (k != from) follow(notches_[k]);
-  follow(next(v));
-  follow(prev(v));
+  for (std::size_t k = 0; k < r; ++k) {
+    const VertexId c = notches_[k];
+    if (k == from || heading_at(p_, v, p_[v], p_[c]) != Heading::kInto) continue;
+    const QPoint mid((at(v).x() + at(c).x()) / 2, (at(v).y() + at(c).y()) / 2);
+    if (!sees(v, mid) || !sees(c, mid)) continue;
+    seen[k] = 1;
+    follow(c, c);
+  }
+  follow(next(v), next(v));
+  follow(prev(v), prev(v));
   for (std::size_t k = 0; k < r; ++k) {
     if (k == from) continue;
     const VertexId w = notches_[k];

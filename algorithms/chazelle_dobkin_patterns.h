@@ -70,16 +70,20 @@
 // Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains) are replaced by one of
 // two sources of the same views across the notches (Views; a test holds them to each other on every
 // pair of notches, degenerate lattice polygons included):
-//   - ray shooting (chazelle-dobkin-n5): from each notch, the rays towards every other notch and along
+//   - ray shooting: from each notch, the rays towards every other notch and along
 //     its two edges, each followed past the vertices it touches into P; the boundary between a ray's
 //     consecutive contacts is a pocket the notch's view passes across along that ray
 //     (compute_transitions). O(r) rays and O(r) further contacts per notch, each O(r log n) on the
 //     boundary's convex arcs (algorithms/ray_shooting.h), straight runs of the boundary skipped in
-//     O(1): O(n + r^3 log n) in all where Theorem 11 gives O(n + r^2 log n), still within Theorem
-//     17's O(n + r^5 log(n/r));
+//     O(1): O(n + r^3 log n) in all where Theorem 11 gives O(n + r^2 log n);
 //   - walks of a triangulation (chazelle-dobkin, whose geodesic trees walk the same triangulation):
 //     the visibility of every vertex from each notch (algorithms/visibility.h, O(n) per notch after an
-//     O(n log n) triangulation), the transitions read from it by binary search: O(n log n + n r).
+//     O(n log n) triangulation), the transitions read from it by binary search: O(n log n + n r);
+//   - for chazelle-dobkin-n5, the first when n + r^3 log n is below n log n + n r (their constants
+//     taken equal), else the second: O(min(n + r^3 log n, n log n + n r)), within Theorem 17's
+//     O(n + r^5 log(n/r)). Rays pay where r is small against n (random n = 20000, r = 16: 0.018 s
+//     against 0.028 s for all of chazelle-dobkin-n5), walks where it is not (comb n = 500, r = 248:
+//     1.2 s against 11.8 s).
 // Every test after it costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the
 // boundary in X4's tips and tests).
 //
@@ -127,15 +131,16 @@ struct Joint {
 };
 
 // Where the views across the notches (transition) come from: ray shooting on the boundary's convex
-// arcs, O(n + r^3 log n) in all (chazelle-dobkin-n5); or walks of a triangulation that the caller
-// also uses, O(n log n + n r) (chazelle-dobkin). Both give the same directions (a test holds them to
-// each other).
-enum class Views : std::uint8_t { kRayShooting, kTriangulation };
+// arcs, O(n + r^3 log n) in all; walks of a triangulation, O(n log n + n r) (chazelle-dobkin, whose
+// geodesic trees walk the same triangulation); or whichever of the two bounds is smaller for the
+// polygon at hand, O(min(n + r^3 log n, n log n + n r)) (chazelle-dobkin-n5). Both give the same
+// directions (a test holds them to each other).
+enum class Views : std::uint8_t { kRayShooting, kTriangulation, kCheaperBound };
 
 class Patterns {
  public:
   // Notches, the boundary's convex chains (O(n)) and the views from each notch across every other.
-  explicit Patterns(const Polygon& p, Views views = Views::kRayShooting);
+  explicit Patterns(const Polygon& p, Views views = Views::kCheaperBound);
   // The chain search refers to this object's rational vertices.
   Patterns(const Patterns&) = delete;
   Patterns& operator=(const Patterns&) = delete;
@@ -204,8 +209,8 @@ class Patterns {
 
   // Counts "x2_tests", "x2_found", "x3_tests", "x3_found", "x4_tests", "x4_found", "tips" (computed),
   // "tips_found" (that exist), "segment_search_steps" (boxes of the chains' hierarchy visited,
-  // binary-search steps and vertices tested by sees and inside); with Views::kRayShooting also
-  // "view_shots" (rays shot for the views) and "view_probes" (the shooter's tests on its arcs).
+  // binary-search steps and vertices tested by sees and inside); when the views come from ray shooting
+  // also "view_shots" (rays shot for them) and "view_probes" (the shooter's tests on its arcs).
   void report(Counters& counters) const;
 
  private:
