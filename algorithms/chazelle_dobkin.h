@@ -1,7 +1,7 @@
 // Algorithm CD, the dynamic program of Chazelle and Dobkin's optimal convex decomposition with Steiner
 // points (B. Chazelle, Computational Geometry and Convexity, thesis, Yale 1980 (000), Sec. 2.3.6,
-// Theorems 16-17), for chazelle-dobkin-n5 and the coming chazelle-dobkin, which differ in STEP 3's X4
-// term.
+// Theorems 16-17), for chazelle-dobkin-n5 and chazelle-dobkin, which differ in STEP 3's X4 term and
+// in where their views across the notches come from.
 //
 // Method. An optimal decomposition has r + 1 - p pieces, p the most compatible X-patterns (Theorem 7),
 // and every pattern can be taken to be a Y-pattern or an X4-pattern (Theorem 9). Patterns whose
@@ -12,8 +12,9 @@
 // B(.,.) and F(.,.) (STEP 2: cases Y1-Y4 of <ARG>), and B(i, j), F(i, j) are the one candidate subtree
 // hanging at z_i (resp. z_j) into V(i, j) (STEP 4: cases B1-B4, F1-F4 with the functions Y and Y').
 // STEP 5 finishes the remaining notches with the naive decomposition searched through the boundary's
-// convex chains (naive_complete_chains, algorithms/naive.h; Theorem 4), and the cut graph is turned into pieces by the shared routine (Theorem 10). Pattern detection (Theorems
-// 13-15, Corollary 14) is in chazelle_dobkin_patterns.h.
+// convex chains (naive_complete_chains, algorithms/naive.h; Theorem 4), and the cut graph is turned
+// into pieces by the shared routine (Theorem 10). Pattern detection (Theorems 13-15, Corollary 14) is
+// in chazelle_dobkin_patterns.h.
 //
 // Orientation: the thesis walks the boundary clockwise; our polygons are counter-clockwise and the
 // notches z_0..z_{r-1} are taken in index order, so the thesis's R_i (the edge towards V(i, j)) is our
@@ -43,11 +44,12 @@
 // - STEP 3's X4 term is left to the variant (x4_term).
 // Deviation: superranges are replaced by ray shooting or by a triangulation's walks (the variant's
 // Views, chazelle_dobkin_patterns.h), which makes the preprocessing O(n + r^3 log n) or
-// O(n log n + n r) in place of O(n + r^2 log n).
+// O(n log n + n r + r^2 log n) in place of O(n + r^2 log n).
 //
 // Time, apart from x4_term: that preprocessing; the joint of each of the O(r^2) stored subtrees is
 // built once; then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each O(1) (Theorems 13
-// and 14, chazelle_dobkin_patterns.h); STEP 5's naive completion, O(n + r^2 log(n/r)). Space O(r^2) subproblems and subtree joints, plus O(n).
+// and 14, chazelle_dobkin_patterns.h); STEP 5's naive completion, O(n + r^2 log(n/r)). Space O(r^2)
+// subproblems and subtree joints, plus O(n).
 // Output: exactly r + 1 - S(0, r-1) convex pieces; Steiner points exact.
 #pragma once
 

@@ -165,9 +165,9 @@
 // over the O(r^2) intervals; the checks of the O(r) patterns laid out O(r^2 log(n/r)); STEP 5
 // O(n + r^2 log(n/r)) (chazelle_dobkin.h). Worst case O(n log n + n r + r^3) (r^2 log n is at most
 // n log n when r^2 <= n and O(r^3) otherwise). Space O(n r) for the trees, O(r^3) for the rows (a row
-// per interval with a witness) and O(r^2) rationals for the lists and loose points. Pre: a simple counter-clockwise polygon with
-// fewer than 32768 notches. Output: an optimal convex decomposition (OPT = r + 1 - the most compatible
-// patterns) under A18', Steiner points exact.
+// per interval with a witness) and O(r^2) rationals for the lists and loose points. Pre: a simple
+// counter-clockwise polygon with fewer than 32768 notches. Output: an optimal convex decomposition
+// (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
 //
 // Counters, besides the program's and the patterns': "x4_loose_points" (pairs of rays meeting inside
 // both), "x4_rays_at_vertex" (loose rays clipped at a vertex), "x4_table_entries" (queries past their

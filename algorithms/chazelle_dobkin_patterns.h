@@ -70,18 +70,19 @@
 // Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains) are replaced by one of
 // two sources of the same views across the notches (Views; a test holds them to each other on every
 // pair of notches, degenerate lattice polygons included):
-//   - ray shooting: from each notch, the rays towards every other notch and along
-//     its two edges, each followed past the vertices it touches into P; the boundary between a ray's
-//     consecutive contacts is a pocket the notch's view passes across along that ray
-//     (compute_transitions). O(r) rays and O(r) further contacts per notch, each O(r log n) on the
-//     boundary's convex arcs (algorithms/ray_shooting.h), straight runs of the boundary skipped in
-//     O(1): O(n + r^3 log n) in all where Theorem 11 gives O(n + r^2 log n);
+//   - ray shooting: from each notch, the rays through the notches it sees (two segment searches each)
+//     and along its two edges, each followed past the vertices it touches into P; the boundary between
+//     a ray's consecutive contacts is a pocket the notch's view passes across along that ray
+//     (compute_transitions). O(r) shots per notch, each O(r log n) on the boundary's convex arcs
+//     (algorithms/ray_shooting.h), straight runs of the boundary skipped in O(1): O(n + r^3 log n) in
+//     all where Theorem 11 gives O(n + r^2 log n);
 //   - walks of a triangulation (chazelle-dobkin, whose geodesic trees walk the same triangulation):
 //     the visibility of every vertex from each notch (algorithms/visibility.h, O(n) per notch after an
-//     O(n log n) triangulation), the transitions read from it by binary search: O(n log n + n r);
+//     O(n log n) triangulation), the transitions read from it by binary search: O(n log n + n r +
+//     r^2 log n);
 //   - for chazelle-dobkin-n5, the first when n + r^3 log n is below n log n + n r (their constants
-//     taken equal), else the second: O(min(n + r^3 log n, n log n + n r)), within Theorem 17's
-//     O(n + r^5 log(n/r)). Rays pay where r is small against n (random n = 20000, r = 16: 0.018 s
+//     taken equal; the walks' r^2 log n, below the rays' r^3 log n, is left out), else the second:
+//     O(min(n + r^3 log n, n log n + n r + r^2 log n)), within Theorem 17's O(n + r^5 log(n/r)). Rays pay where r is small against n (random n = 20000, r = 16: 0.018 s
 //     against 0.028 s for all of chazelle-dobkin-n5), walks where it is not (comb n = 500, r = 248:
 //     1.2 s against 11.8 s).
 // Every test after it costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the
@@ -131,9 +132,9 @@ struct Joint {
 };
 
 // Where the views across the notches (transition) come from: ray shooting on the boundary's convex
-// arcs, O(n + r^3 log n) in all; walks of a triangulation, O(n log n + n r) (chazelle-dobkin, whose
-// geodesic trees walk the same triangulation); or whichever of the two bounds is smaller for the
-// polygon at hand, O(min(n + r^3 log n, n log n + n r)) (chazelle-dobkin-n5). Both give the same
+// arcs, O(n + r^3 log n) in all; walks of a triangulation, O(n log n + n r + r^2 log n)
+// (chazelle-dobkin, whose geodesic trees walk the same triangulation); or whichever of the two bounds
+// is smaller for the polygon at hand (chazelle-dobkin-n5; see the header comment). Both give the same
 // directions (a test holds them to each other).
 enum class Views : std::uint8_t { kRayShooting, kTriangulation, kCheaperBound };
 

@@ -420,9 +420,11 @@ class ProgramCubic final : public Program {
 
   static int ray(int notch, std::uint8_t sides, int bit) { return 2 * notch + ((sides >> bit) & 1); }
 
-  // Only the O(r) patterns laid out are checked, O(r log(n/r)) each: an interval's witness that no
-  // layout uses changes no count the output reaches (the program checks that the patterns laid out
-  // add up to S(0, r-1)).
+  // Only the O(r) patterns laid out are checked, O(r log(n/r)) each: a witness that no layout uses
+  // cannot make the output invalid (the program checks that the patterns laid out add up to
+  // S(0, r-1)). A wrong one, which would be a bug of the scans, could still raise an S that STEP 4
+  // compares with and so cost patterns elsewhere without a throw; the tests hold every row to walks
+  // with segment searches and every count to chazelle-dobkin-n5's.
   void check_x4(const std::array<int, 4>& notches, const QPoint& x, const QPoint& y) override {
     if (!is_x4(notches, x, y)) throw std::logic_error("chazelle-dobkin: an X4 witness fails Lemma 9");
   }

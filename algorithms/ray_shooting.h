@@ -1,4 +1,5 @@
-// Ray shooting from polygon vertices, for keil-snoeyink-reduced.
+// Ray shooting from polygon vertices, for keil-snoeyink-reduced, Chazelle-Dobkin's loose rays and its
+// views across the notches (chazelle_dobkin_tables.h, chazelle_dobkin_patterns.cpp).
 //
 // Keil & Snoeyink (001, Sec. 4) shoot O(r^2) rays in O(log n) each after linear preprocessing
 // (geodesic triangulations, Chazelle et al.; or Hershberger-Suri). This is a simpler structure with a

@@ -221,7 +221,8 @@ TEST(ChazelleDobkinPatterns, RayShootingAndTheTriangulationGiveTheSameViews) {
   for (int round = 0; round < 1000; ++round)
     compare(lattice::lattice_polygon(8 + round % 17, 5 + round % 4, rng), "lattice polygon " + std::to_string(round));
   for (int round = 0; round < 1000; ++round)
-    if (const std::optional<Polygon> p = lattice::notched_rectangle(rng)) compare(*p, "notched rectangle " + std::to_string(round));
+    if (const std::optional<Polygon> p = lattice::notched_rectangle(rng))
+      compare(*p, "notched rectangle " + std::to_string(round));
   EXPECT_GT(pairs, 100000u);
   EXPECT_GT(hidden, 50000u);
 }
