@@ -1,7 +1,6 @@
 // Algorithm CD, the dynamic program of Chazelle and Dobkin's optimal convex decomposition with Steiner
 // points (B. Chazelle, Computational Geometry and Convexity, thesis, Yale 1980 (000), Sec. 2.3.6,
-// Theorems 16-17), for chazelle-dobkin-n5 and chazelle-dobkin, which differ in STEP 3's X4 term and
-// in where their views across the notches come from.
+// Theorems 16-17), for chazelle-dobkin-n5 and chazelle-dobkin, which differ in STEP 3's X4 term.
 //
 // Method. An optimal decomposition has r + 1 - p pieces, p the most compatible X-patterns (Theorem 7),
 // and every pattern can be taken to be a Y-pattern or an X4-pattern (Theorem 9). Patterns whose
@@ -42,9 +41,9 @@
 //   that needs the edge turned further than that point is missed: a compromise of exactness against
 //   the thesis's extreme (a symbolic perturbation would remove it); no test has met such a case.
 // - STEP 3's X4 term is left to the variant (x4_term).
-// Deviation: superranges are replaced by ray shooting or by a triangulation's walks (the variant's
-// Views, chazelle_dobkin_patterns.h), which makes the preprocessing O(n + r^3 log n) or
-// O(n log n + n r + r^2 log n) in place of O(n + r^2 log n).
+// Deviation: superranges are replaced by ray shooting or by a triangulation's walks, whichever bound is
+// smaller (Views::kCheaperBound, chazelle_dobkin_patterns.h), which makes the preprocessing
+// O(min(n + r^3 log n, n log n + n r + r^2 log n)) in place of O(n + r^2 log n).
 //
 // Time, apart from x4_term: that preprocessing; the joint of each of the O(r^2) stored subtrees is
 // built once; then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each O(1) (Theorems 13
@@ -96,8 +95,8 @@ struct Best {
 class Program {
  public:
   virtual ~Program() = default;
-  explicit Program(const Polygon& p, Views views = Views::kCheaperBound)
-      : p_(p), patterns_(p, views), r_(static_cast<int>(patterns_.notches().size())),
+  explicit Program(const Polygon& p)
+      : p_(p), patterns_(p), r_(static_cast<int>(patterns_.notches().size())),
         best_(static_cast<std::size_t>(r_) * r_), b_(best_.size()), f_(best_.size()), b_joint_(best_.size()),
         f_joint_(best_.size()) {}
 

@@ -155,12 +155,14 @@
 //   81,892 / 184,936, 4.21 s (8,084 and 58,858 tests; 4.1-4.7 s at r = 200, where STEP 2's X3 tests
 //   take most of the time).
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
-//   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5, but the views across the
-//   notches come from walks of the triangulation the geodesic trees use (Views::kTriangulation, in
-//   place of superranges; see chazelle_dobkin_patterns.h).
+//   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (views across the notches by
+//   ray shooting or a triangulation's walks in place of superranges; see chazelle_dobkin_patterns.h).
+//   P is triangulated for the geodesic trees only when a scan first needs one (on the reference
+//   run's comb, convex, few-notches and spiral polygons none does).
 //
-// Time: O(n log n + n r + r^2 log n) preprocessing, O(r^2 log r) for the lists, O(n + r log n) for each
-// of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
+// Time: the views O(min(n + r^3 log n, n log n + n r + r^2 log n)) (chazelle_dobkin_patterns.h), the
+// triangulation O(n log n) once a scan needs a tree, O(r^2 log r) for the lists, O(n + r log n) for
+// each of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
 // O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for r < 32768), O(r^3)
 // over the O(r^2) intervals; the checks of the O(r) patterns laid out O(r^2 log(n/r)); STEP 5
 // O(n + r^2 log(n/r)) (chazelle_dobkin.h). Worst case O(n log n + n r + r^3) (r^2 log n is at most

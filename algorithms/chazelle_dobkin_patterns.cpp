@@ -251,7 +251,13 @@ Patterns::StraightRuns::StraightRuns(const Polygon& p) : forward(p.size()), back
   }
 }
 
+const VisibilityGraph& Patterns::triangulation() const {
+  if (!visibility_) visibility_.emplace(p_);
+  return *visibility_;
+}
+
 void Patterns::views_by_ray_shooting() {
+  views_by_rays_ = true;
   RayShooter shooter(p_);
   const StraightRuns runs(p_);
   for (std::size_t i = 0; i < notches_.size(); ++i) compute_transitions(i, shooter, runs);
@@ -511,7 +517,7 @@ void Patterns::report(Counters& counters) const {
   counters["tips"] += tips_;
   counters["tips_found"] += tips_found_;
   counters["segment_search_steps"] += segments_.steps();
-  if (!visibility_) {
+  if (views_by_rays_) {
     counters["view_shots"] += view_shots_;
     counters["view_probes"] += view_probes_;
   }

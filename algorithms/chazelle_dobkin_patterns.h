@@ -76,15 +76,14 @@
 //     (compute_transitions). O(r) shots per notch, each O(r log n) on the boundary's convex arcs
 //     (algorithms/ray_shooting.h), straight runs of the boundary skipped in O(1): O(n + r^3 log n) in
 //     all where Theorem 11 gives O(n + r^2 log n);
-//   - walks of a triangulation (chazelle-dobkin, whose geodesic trees walk the same triangulation):
-//     the visibility of every vertex from each notch (algorithms/visibility.h, O(n) per notch after an
-//     O(n log n) triangulation), the transitions read from it by binary search: O(n log n + n r +
-//     r^2 log n);
-//   - for chazelle-dobkin-n5, the first when n + r^3 log n is below n log n + n r (their constants
-//     taken equal; the walks' r^2 log n, below the rays' r^3 log n, is left out), else the second:
-//     O(min(n + r^3 log n, n log n + n r + r^2 log n)), within Theorem 17's O(n + r^5 log(n/r)). Rays pay where r is small against n (random n = 20000, r = 16: 0.018 s
-//     against 0.028 s for all of chazelle-dobkin-n5), walks where it is not (comb n = 500, r = 248:
-//     1.2 s against 11.8 s).
+//   - walks of a triangulation: the visibility of every vertex from each notch
+//     (algorithms/visibility.h, O(n) per notch after an O(n log n) triangulation), the transitions
+//     read from it by binary search: O(n log n + n r + r^2 log n);
+//   - in both programs, the first when n + r^3 log n is below n log n + n r (their constants taken
+//     equal; the walks' r^2 log n, below the rays' r^3 log n, is left out), else the second:
+//     O(min(n + r^3 log n, n log n + n r + r^2 log n)), within Theorem 17's O(n + r^5 log(n/r)). Rays
+//     pay where r is small against n (random n = 20000, r = 16: 0.018 s against 0.028 s for all of
+//     chazelle-dobkin-n5), walks where it is not (comb n = 500, r = 248: 1.2 s against 11.8 s).
 // Every test after it costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the
 // boundary in X4's tips and tests).
 //
@@ -132,10 +131,9 @@ struct Joint {
 };
 
 // Where the views across the notches (transition) come from: ray shooting on the boundary's convex
-// arcs, O(n + r^3 log n) in all; walks of a triangulation, O(n log n + n r + r^2 log n)
-// (chazelle-dobkin, whose geodesic trees walk the same triangulation); or whichever of the two bounds
-// is smaller for the polygon at hand (chazelle-dobkin-n5; see the header comment). Both give the same
-// directions (a test holds them to each other).
+// arcs, O(n + r^3 log n) in all; walks of a triangulation, O(n log n + n r + r^2 log n); or whichever
+// of the two bounds is smaller for the polygon at hand (both programs; see the header comment). Both
+// give the same directions (a test holds them to each other).
 enum class Views : std::uint8_t { kRayShooting, kTriangulation, kCheaperBound };
 
 class Patterns {
@@ -197,9 +195,9 @@ class Patterns {
   // Whether the closed segment st, between interior points, avoids P's boundary. O(r log(n/r)).
   bool inside(const QPoint& s, const QPoint& t) const;
 
-  // P's triangulation, with visibility from its vertices (algorithms/visibility.h). Pre: built with
-  // Views::kTriangulation.
-  const VisibilityGraph& triangulation() const { return *visibility_; }
+  // P's triangulation, with visibility from its vertices (algorithms/visibility.h): the views' when
+  // they came from it, else built on this first call, O(n log n).
+  const VisibilityGraph& triangulation() const;
 
   // A vertex on the ray from notch `from` along which its view passes across notch `towards`'s
   // boundary position: `towards` itself when from sees it (a diagonal or an edge), else the window
@@ -236,7 +234,8 @@ class Patterns {
   const Polygon& p_;
   std::vector<QPoint> exact_;
   mutable boundary::SegmentSearch segments_;  // P's boundary in convex chains, for sees and inside
-  std::optional<VisibilityGraph> visibility_;  // with Views::kTriangulation
+  mutable std::optional<VisibilityGraph> visibility_;  // built for the views or by triangulation()
+  bool views_by_rays_ = false;
   std::vector<VertexId> notches_;
   // Per notch: the bare notch, its joint and its two branches.
   std::vector<AdaptedNotch> bare_;

@@ -220,9 +220,8 @@ class ProgramCubic final : public Program {
   enum class P4Test { kGeodesics, kSegmentSearch };
 
   explicit ProgramCubic(const Polygon& p, P4Test p4_test = P4Test::kGeodesics)
-      : Program(p, Views::kTriangulation), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
-        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)), p4_test_(p4_test),
-        geodesics_(p, patterns().triangulation(), rays_.terminals()) {}
+      : Program(p), polygon_(p), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
+        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)), p4_test_(p4_test) {}
 
   void report(Counters& counters) const {
     counters["x4_loose_points"] = rays_.loose_points();
@@ -238,9 +237,9 @@ class ProgramCubic final : public Program {
     counters["x4_rays_at_vertex"] = rays_.stopped_at_vertices();
     counters["x4_funnel_points"] = funnel_points_;
     counters["x4_funnel_steps"] = funnel_steps_;
-    counters["geodesic_trees"] = geodesics_.trees();
-    counters["geodesic_triangles"] = geodesics_.triangles();
-    counters["geodesic_tangent_steps"] = geodesics_.tangent_steps();
+    counters["geodesic_trees"] = geodesics_ ? geodesics_->trees() : 0;
+    counters["geodesic_triangles"] = geodesics_ ? geodesics_->triangles() : 0;
+    counters["geodesic_tangent_steps"] = geodesics_ ? geodesics_->tangent_steps() : 0;
   }
 
   // The row of interval (g, h) at outer notch q, as STEP 3 reads it: E(g, h)[q] for q < g, W(g, h)[q]
@@ -674,8 +673,8 @@ class ProgramCubic final : public Program {
   // The funnel of the geodesics from G's ends to terminal e: O(r), their length (they list their turns,
   // at notches, and their ends).
   Funnel funnel(int G, std::size_t e) {
-    geodesics_.path(LooseRays::terminal(G, 0), e, from_notch_);
-    geodesics_.path(LooseRays::terminal(G, 1), e, from_far_end_);
+    geodesics().path(LooseRays::terminal(G, 0), e, from_notch_);
+    geodesics().path(LooseRays::terminal(G, 1), e, from_far_end_);
     const std::vector<const FilteredPoint*>&A = from_notch_, &B = from_far_end_;
     std::size_t a = A.size(), b = B.size();
     while (a > 0 && b > 0 && A[a - 1] == B[b - 1]) --a, --b;
@@ -732,11 +731,19 @@ class ProgramCubic final : public Program {
     ++table_witnesses_;
   }
 
+  // The trees, over P's triangulation, built when a scan first needs a geodesic: inputs whose scans
+  // need none never triangulate P (their views come from ray shooting where that bound is smaller).
+  GeodesicTrees& geodesics() {
+    if (!geodesics_) geodesics_.emplace(polygon_, patterns().triangulation(), rays_.terminals());
+    return *geodesics_;
+  }
+
+  const Polygon& polygon_;
   int notch_count_;
   LooseRays rays_;
   std::vector<Row> rows_;  // at(g, h): the row of interval (g, h), empty when it has no witness
   P4Test p4_test_;
-  GeodesicTrees geodesics_;
+  std::optional<GeodesicTrees> geodesics_;
   std::vector<const FilteredPoint*> from_notch_, from_far_end_;  // the geodesics of funnel(), reused
   std::int64_t scans_sharing_an_end_ = 0, funnel_points_ = 0, funnel_steps_ = 0;
   std::int64_t table_entries_ = 0, table_witnesses_ = 0, scan_steps_ = 0, p4_tests_ = 0, lookup_steps_ = 0, chosen_ = 0,
