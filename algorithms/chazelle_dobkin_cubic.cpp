@@ -63,9 +63,9 @@
 //     witness is the first Y of that range, in order from that end, that passes P4, XY in P. The Y
 //     that X sees are a range of places (6), found with geodesics (7), so the witness is one nearest
 //     member of the set. Soundness: every witness satisfies all of (4), which is checked again in
-//     full on every pattern laid out (check_x4; a failure throws: it would be a bug). Completeness over loose pairs:
-//     by (4), every loose pair with the four conditions lies in its query's range, so the query finds
-//     it unless it found an earlier witness.
+//     full on every pattern laid out (check_x4; a failure throws: it would be a bug). Completeness
+//     over loose pairs: by (4), every loose pair with the four conditions lies in its query's range,
+//     so the query finds it unless it found an earlier witness.
 // (6) What X sees of H (not in the OCR text, whose "2-way scans" stop before saying how; proven here).
 //     G and H are the open clipped rays, in int P; X on G, Y on H. For one X the Y it sees form an
 //     interval of H (if X sees Y1 and Y2, the triangle X Y1 Y2 has its boundary in int P, so all of it
@@ -162,9 +162,9 @@
 //
 // Time: the views O(min(n + r^3 log n, n log n + n r + r^2 log n)) (chazelle_dobkin_patterns.h), the
 // triangulation O(n log n) once a scan needs a tree, O(r^2 log r) for the lists, O(n + r log n) for
-// each of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP 3's X4 term
-// O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for r < 32768), O(r^3)
-// over the O(r^2) intervals; the checks of the O(r) patterns laid out O(r^2 log(n/r)); STEP 5
+// each of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP
+// 3's X4 term O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for
+// r < 32768), O(r^3) over the O(r^2) intervals; the checks of the O(r) patterns laid out O(r^2 log(n/r)); STEP 5
 // O(n + r^2 log(n/r)) (chazelle_dobkin.h). Worst case O(n log n + n r + r^3) (r^2 log n is at most
 // n log n when r^2 <= n and O(r^3) otherwise). Space O(n r) for the trees, O(r^3) for the rows (a row
 // per interval with a witness) and O(r^2) rationals for the lists and loose points. Pre: a simple
