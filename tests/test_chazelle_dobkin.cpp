@@ -90,9 +90,10 @@ TEST(ChazelleDobkinPatterns, X2IsADiagonalInBothRanges) {
   }
 }
 
-// Cuts from each of the three notches to s, then the naive decomposition for the other notches.
+// Cuts from each of the three notches to s, then the naive decomposition for the other notches, its
+// boundary searched edge by edge or through the convex chains (Chazelle-Dobkin's STEP 5).
 Decomposition with_x3(const Polygon& p, const std::vector<VertexId>& notches, const std::array<std::size_t, 3>& triple,
-                      const QPoint& s, Counters& counters) {
+                      const QPoint& s, Counters& counters, bool through_chains = false) {
   Decomposition d;
   const VertexId sid = static_cast<VertexId>(p.size() + d.add_steiner(s));
   std::vector<VertexId> rest;
@@ -100,7 +101,7 @@ Decomposition with_x3(const Polygon& p, const std::vector<VertexId>& notches, co
     if (k == triple[0] || k == triple[1] || k == triple[2]) d.add_cut(notches[k], sid);
     else rest.push_back(notches[k]);
   }
-  return naive_complete(p, d, rest, counters);
+  return through_chains ? naive_complete_chains(p, d, rest, counters) : naive_complete(p, d, rest, counters);
 }
 
 TEST(ChazelleDobkinPatterns, XPatternTriangleHasItsX3AndNoX2) {
@@ -148,7 +149,8 @@ TEST(ChazelleDobkinPatterns, X4QuadsHaveNoX2OrX3) {
     }
 }
 
-// Every X3 found is a pattern: with it, the naive decomposition of the rest gives r pieces, valid.
+// Every X3 found is a pattern: with it, the naive decomposition of the rest gives r pieces, valid,
+// and the same segments when searched through the chains (STEP 5 around an interior Steiner point).
 TEST(ChazelleDobkinPatterns, EveryX3FoundSavesOnePiece) {
   std::size_t found = 0;
   for (const Sample& s : small_samples()) {
@@ -166,6 +168,15 @@ TEST(ChazelleDobkinPatterns, EveryX3FoundSavesOnePiece) {
           const Validation v = validate(p, d, Kind::Convex, true);
           EXPECT_TRUE(v.ok) << label(s) << " triple " << i << "," << j << "," << k << ": " << v.reason;
           EXPECT_EQ(pieces_of(p, d).size(), r) << label(s);
+          const Decomposition chained = with_x3(p, patterns.notches(), {i, j, k}, *steiner, counters, true);
+          const auto same_point = [](const SteinerPoint& x, const SteinerPoint& y) {
+            return x.point == y.point && x.boundary_edge == y.boundary_edge;
+          };
+          const auto same_cut = [](const Cut& x, const Cut& y) { return x.a == y.a && x.b == y.b; };
+          const auto& cs = chained.steiner;
+          EXPECT_TRUE(std::equal(d.steiner.begin(), d.steiner.end(), cs.begin(), cs.end(), same_point) &&
+                      std::equal(d.cuts.begin(), d.cuts.end(), chained.cuts.begin(), chained.cuts.end(), same_cut))
+              << label(s) << " triple " << i << "," << j << "," << k;
         }
   }
   EXPECT_GT(found, 3u);
