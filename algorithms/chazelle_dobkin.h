@@ -142,6 +142,7 @@ class Program {
 
   int S(int i, int j) const { return i >= j ? 0 : best_[at(i, j)].count; }
   Patterns& patterns() { return patterns_; }
+  const Polygon& polygon() const { return p_; }
 
  private:
   std::size_t at(int i, int j) const { return static_cast<std::size_t>(i) * r_ + j; }

@@ -220,7 +220,7 @@ class ProgramCubic final : public Program {
   enum class P4Test { kGeodesics, kSegmentSearch };
 
   explicit ProgramCubic(const Polygon& p, P4Test p4_test = P4Test::kGeodesics)
-      : Program(p), polygon_(p), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
+      : Program(p), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
         rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)), p4_test_(p4_test) {}
 
   void report(Counters& counters) const {
@@ -734,11 +734,10 @@ class ProgramCubic final : public Program {
   // The trees, over P's triangulation, built when a scan first needs a geodesic: inputs whose scans
   // need none never triangulate P (their views come from ray shooting where that bound is smaller).
   GeodesicTrees& geodesics() {
-    if (!geodesics_) geodesics_.emplace(polygon_, patterns().triangulation(), rays_.terminals());
+    if (!geodesics_) geodesics_.emplace(polygon(), patterns().triangulation(), rays_.terminals());
     return *geodesics_;
   }
 
-  const Polygon& polygon_;
   int notch_count_;
   LooseRays rays_;
   std::vector<Row> rows_;  // at(g, h): the row of interval (g, h), empty when it has no witness
