@@ -320,7 +320,8 @@ void Patterns::compute_transitions(std::size_t from, RayShooter& shooter, const 
   };
   for (std::size_t k = 0; k < r; ++k) {
     const VertexId c = notches_[k];
-    if (k == from || heading_at(p_, v, p_[v], p_[c]) != Heading::kInto) continue;
+    if (k == from) continue;
+    // sees() takes the notch's open cone: a notch along one of its edges is left to the follows below.
     const QPoint mid((at(v).x() + at(c).x()) / 2, (at(v).y() + at(c).y()) / 2);
     if (!sees(v, mid) || !sees(c, mid)) continue;
     seen[k] = 1;
