@@ -25,6 +25,7 @@
 #include "generators/rng.h"
 #include "tests/brute_force.h"
 #include "tests/lattice_polygons.h"
+#include "tests/same_decomposition.h"
 
 #include <CGAL/Polygon_2_algorithms.h>
 
@@ -169,14 +170,7 @@ TEST(ChazelleDobkinPatterns, EveryX3FoundSavesOnePiece) {
           EXPECT_TRUE(v.ok) << label(s) << " triple " << i << "," << j << "," << k << ": " << v.reason;
           EXPECT_EQ(pieces_of(p, d).size(), r) << label(s);
           const Decomposition chained = with_x3(p, patterns.notches(), {i, j, k}, *steiner, counters, true);
-          const auto same_point = [](const SteinerPoint& x, const SteinerPoint& y) {
-            return x.point == y.point && x.boundary_edge == y.boundary_edge;
-          };
-          const auto same_cut = [](const Cut& x, const Cut& y) { return x.a == y.a && x.b == y.b; };
-          const auto& cs = chained.steiner;
-          EXPECT_TRUE(std::equal(d.steiner.begin(), d.steiner.end(), cs.begin(), cs.end(), same_point) &&
-                      std::equal(d.cuts.begin(), d.cuts.end(), chained.cuts.begin(), chained.cuts.end(), same_cut))
-              << label(s) << " triple " << i << "," << j << "," << k;
+          EXPECT_TRUE(same_decomposition(d, chained)) << label(s) << " triple " << i << "," << j << "," << k;
         }
   }
   EXPECT_GT(found, 3u);
