@@ -109,7 +109,8 @@
 //     no point of H. ("Strictly": a segment XY that touches the boundary touches a vertex, which then
 //     lies on one of the two rays.)
 //     So a scan takes the two funnels of G's ends to H's ends from the trees of geodesics rooted at
-//     H's ends (each built the first time a scan needs it, O(n + r log n), at most 3r of them), and each
+//     H's ends (each built the first time a scan needs it, O(r log r) over a decomposition of P by
+//     O(r) vertical chords, at most 3r of them), and each
 //     query its f1 and f2 by a search in each funnel and its range [lo, hi) by two searches along H.
 //     A place is tested by at most two orientations (a query adds one, for the angle), which tell where
 //     its Y lies: before the ray through f1 (towards H's notch), after the ray through f2 (towards the
@@ -142,9 +143,9 @@
 // Deviations.
 // - The thesis's text stops before saying how its scans test P4; its "O(N) per interval after O(N^3)
 //   preprocessing" (for the X4 term) suggests a table of what each loose point sees of each ray. The
-//   funnels of (7) compute those entries as the scans need them and store none, but their geodesic
-//   trees cost O(n r + r^2 log n), where Algorithm CD's preprocessing of the polygon is
-//   O(n + r^2 log n).
+//   funnels of (7) compute those entries as the scans need them and store none; their geodesic
+//   trees cost O(n + r^2 log n) in all (the chords, then O(r log r) per tree), as Algorithm CD's
+//   preprocessing of the polygon does.
 //   The check of the patterns laid out (check_x4) tests P4 as a segment search on the boundary's
 //   convex chains (algorithms/boundary_chains.h), O(r log(n/r)) for each of O(r) patterns. Measured at
 //   e6bf1f2 (seed 1, `polydecomp run --json`; "x4_p4_tests" / "x4_funnel_steps", seconds; in brackets
@@ -157,19 +158,22 @@
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (views across the notches by
 //   ray shooting or a triangulation's walks in place of superranges; see chazelle_dobkin_patterns.h).
-//   P is triangulated for the geodesic trees only when a scan first needs one (on the reference
-//   run's comb, convex, few-notches and spiral polygons none does).
+//   The geodesic trees walk P's decomposition by vertical chords (algorithms/geodesics.h), built
+//   when a scan first needs a tree (on the reference run's comb, convex, few-notches and spiral
+//   polygons none does); P is triangulated only for the views' walks.
 //
 // Time: the views O(min(n + r^3 log n, n log n + n r + r^2 log n)) (chazelle_dobkin_patterns.h), the
-// triangulation O(n log n) once a scan needs a tree, O(r^2 log r) for the lists, O(n + r log n) for
+// vertical chords O(n + r^2 log n) once a scan needs a tree, O(r^2 log r) for the lists, O(r log r) for
 // each of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP
 // 3's X4 term O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for
-// r < 32768), O(r^3) over the O(r^2) intervals; the checks of the O(r) patterns laid out O(r^2 log(n/r)); STEP 5
-// O(n + r^2 log(n/r)) (chazelle_dobkin.h). Worst case O(n log n + n r + r^3) (r^2 log n is at most
-// n log n when r^2 <= n and O(r^3) otherwise). Space O(n r) for the trees, O(r^3) for the rows (a row
-// per interval with a witness) and O(r^2) rationals for the lists and loose points. Pre: a simple
-// counter-clockwise polygon with fewer than 32768 notches. Output: an optimal convex decomposition
-// (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
+// r < 32768), O(r^3) over the O(r^2) intervals; the checks of the O(r) patterns laid out
+// O(r^2 log(n/r)); STEP 5 O(n + r^2 log(n/r)) (chazelle_dobkin.h). Worst case
+// O(n + r^3 + min(r^3 log n, n log n + n r)), the last term the views' (r^2 log n is at most n when
+// r^2 log n <= n, and O(r^3) otherwise, since then log n = O(log r)); the thesis's O(n + r^3) needs
+// superranges in place of the views (Theorem 11). Space O(n + r^2) for the chords and the trees,
+// O(r^3) for the rows (a row per interval with a witness) and O(r^2) rationals for the lists and loose
+// points. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
+// convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
 //
 // Counters, besides the program's and the patterns': "x4_loose_points" (pairs of rays meeting inside
 // both), "x4_rays_at_vertex" (loose rays clipped at a vertex), "x4_table_entries" (queries past their
@@ -179,9 +183,9 @@
 // funnels), "x4_funnel_steps" (orientations of the queries' searches in the funnels),
 // "x4_scans_sharing_an_end" (scans, with queries and inserts, of rays apart that share an end),
 // "x4_lookup_steps" (STEP 3's lookups), "x4_chosen" (intervals whose S was reached by an X4-pattern),
-// "x4_chosen_from_w" (those from W's pairing), and the trees' "geodesic_trees", "geodesic_triangles"
-// (triangles entered by their walks) and "geodesic_tangent_steps" (orientations of their funnel
-// searches).
+// "x4_chosen_from_w" (those from W's pairing), and the trees' "geodesic_chords" (of the decomposition
+// they walk), "geodesic_trees", "geodesic_faces" (faces entered by their walks) and
+// "geodesic_tangent_steps" (orientations of their funnel searches).
 #include "algorithms/chazelle_dobkin_tables.h"
 
 namespace pd {
@@ -196,7 +200,7 @@ Decomposition chazelle_dobkin(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n*log(n)+n*r+r^3", "== OPT",
+REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n+r^3+min(r^3*log(n),n*log(n)+n*r)", "== OPT",
                              "Chazelle thesis (000) Sec. 2.4, Def. 2.4, Thm 18, Lemma 9", 20000, chazelle_dobkin});
 
 }  // namespace pd

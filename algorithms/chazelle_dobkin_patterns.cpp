@@ -171,13 +171,13 @@ Patterns::Patterns(const Polygon& p, Views views) : p_(p), exact_(exact_vertices
 }
 
 void Patterns::views_from_triangulation() {
-  visibility_.emplace(p_);
+  const VisibilityGraph visibility(p_);
   std::vector<std::uint32_t> visible, seen;
   std::int64_t triangles = 0;
   for (std::size_t i = 0; i < notches_.size(); ++i) {
     visible.clear();
     seen.clear();
-    visibility_->visible_from(notches_[i], visible, triangles, &seen);
+    visibility.visible_from(notches_[i], visible, triangles, &seen);
     compute_transitions(i, visible, seen);
   }
 }
@@ -249,11 +249,6 @@ Patterns::StraightRuns::StraightRuns(const Polygon& p) : forward(p.size()), back
     const std::size_t u = (bend + k) % n, w = p.prev(u);
     backward[u] = static_cast<VertexId>(straight(w) ? backward[w] : w);
   }
-}
-
-const VisibilityGraph& Patterns::triangulation() const {
-  if (!visibility_) visibility_.emplace(p_);
-  return *visibility_;
 }
 
 void Patterns::views_by_ray_shooting() {

@@ -92,7 +92,6 @@
 
 #include "algorithms/boundary_chains.h"
 #include "algorithms/ray_shooting.h"
-#include "algorithms/visibility.h"
 #include "core/registry.h"
 
 #include <CGAL/Interval_nt.h>
@@ -195,10 +194,6 @@ class Patterns {
   // Whether the closed segment st, between interior points, avoids P's boundary. O(r log(n/r)).
   bool inside(const QPoint& s, const QPoint& t) const;
 
-  // P's triangulation, with visibility from its vertices (algorithms/visibility.h): the views' when
-  // they came from it, else built on this first call, O(n log n).
-  const VisibilityGraph& triangulation() const;
-
   // A vertex on the ray from notch `from` along which its view passes across notch `towards`'s
   // boundary position: `towards` itself when from sees it (a diagonal or an edge), else the window
   // whose pocket hides it (see the header comment). Only the ray's direction is meant.
@@ -234,7 +229,6 @@ class Patterns {
   const Polygon& p_;
   std::vector<QPoint> exact_;
   mutable boundary::SegmentSearch segments_;  // P's boundary in convex chains, for sees and inside
-  mutable std::optional<VisibilityGraph> visibility_;  // built for the views or by triangulation()
   bool views_by_rays_ = false;
   std::vector<VertexId> notches_;
   // Per notch: the bare notch, its joint and its two branches.

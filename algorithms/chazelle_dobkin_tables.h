@@ -237,8 +237,9 @@ class ProgramCubic final : public Program {
     counters["x4_rays_at_vertex"] = rays_.stopped_at_vertices();
     counters["x4_funnel_points"] = funnel_points_;
     counters["x4_funnel_steps"] = funnel_steps_;
+    counters["geodesic_chords"] = geodesics_ ? geodesics_->chords() : 0;
     counters["geodesic_trees"] = geodesics_ ? geodesics_->trees() : 0;
-    counters["geodesic_triangles"] = geodesics_ ? geodesics_->triangles() : 0;
+    counters["geodesic_faces"] = geodesics_ ? geodesics_->faces_entered() : 0;
     counters["geodesic_tangent_steps"] = geodesics_ ? geodesics_->tangent_steps() : 0;
   }
 
@@ -731,10 +732,9 @@ class ProgramCubic final : public Program {
     ++table_witnesses_;
   }
 
-  // The trees, over P's triangulation, built when a scan first needs a geodesic: inputs whose scans
-  // need none never triangulate P (their views come from ray shooting where that bound is smaller).
+  // The trees, over P's decomposition by vertical chords, built when a scan first needs a geodesic.
   GeodesicTrees& geodesics() {
-    if (!geodesics_) geodesics_.emplace(polygon(), patterns().triangulation(), rays_.terminals());
+    if (!geodesics_) geodesics_.emplace(polygon(), rays_.terminals());
     return *geodesics_;
   }
 

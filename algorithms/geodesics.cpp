@@ -1,5 +1,7 @@
-// Geodesic trees by the funnel walk; see geodesics.h.
+// Geodesic trees by the funnel walk over a decomposition by vertical chords; see geodesics.h.
 #include "algorithms/geodesics.h"
+
+#include "algorithms/ray_shooting.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -24,189 +26,217 @@ std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size
   return guess ? first_holding(lo, hi, *guess, reached_from) : first_holding_from_ends(lo, hi, reached_from);
 }
 
-GeodesicTrees::GeodesicTrees(const Polygon& p, const VisibilityGraph& triangulation, const std::vector<Terminal>& terminals)
-    : p_(p), triangulation_(triangulation), terminals_(terminals), terminals_on_edge_(p.size()),
-      trees_by_root_(terminals.size()), built_(terminals.size(), 0), edge_root_id_(static_cast<std::uint32_t>(p.size())),
-      funnel_(2 * funnel_middle() + 2, 0), funnel_points_(funnel_.size(), nullptr) {
-  vertices_.reserve(p.size());
-  for (const Point& v : p.vertices()) vertices_.emplace_back(to_exact(v));
-  edge_points_.reserve(terminals.size());
-  for (std::size_t t = 0; t < terminals.size(); ++t) {
-    edge_points_.emplace_back(terminals[t].point);
-    if (!terminals[t].at_vertex) terminals_on_edge_[terminals[t].edge].push_back(static_cast<std::uint32_t>(t));
+GeodesicTrees::GeodesicTrees(const Polygon& p, const std::vector<Terminal>& terminals) : p_(p) {
+  for (const Terminal& t : terminals) {
+    site_of_terminal_.push_back(static_cast<std::uint32_t>(sites_.size()));
+    sites_.push_back({t.edge, t.at_vertex, FilteredPoint(t.point)});
   }
-  mark_windows_towards_terminals();
+  add_chords(p);
+  sort_sites();
+  build_faces();
+  turn_by_root_.resize(sites_.size());
+  funnel_.assign(2 * faces_.size() + 8, 0);
+  funnel_points_.assign(funnel_.size(), nullptr);
 }
 
-// Triangles are numbered by a slot with the triangle on its left (a -> b, third vertex next after b
-// around a); the triangle on the right of slot s is the one on the left of twin(s). A depth-first walk
-// over the dual tree from triangle 0 counts the terminals in each subtree; beyond a slot lies the
-// subtree of the triangle on its right, or all but the subtree of the triangle on its left.
-void GeodesicTrees::mark_windows_towards_terminals() {
-  const std::uint32_t slots = triangulation_.row_end(p_.size() - 1);
-  std::vector<std::uint32_t> left_of(slots, kUnset), owner(slots, 0);
-  std::uint32_t count = 0;
-  for (std::uint32_t a = 0; a < p_.size(); ++a)
-    for (std::uint32_t h = triangulation_.row_begin(a); h + 1 < triangulation_.row_end(a); ++h) {
-      if (left_of[h] != kUnset) continue;
-      for (std::uint32_t s : triangle_slots(h)) left_of[s] = count;
-      owner[count++] = h;
-    }
-  std::vector<std::uint32_t> weight(count, 0), parent(count, kUnset), order;
-  for (const Terminal& t : terminals_) weight[left_of[triangulation_.row_begin(t.edge)]] += 1;
-  std::vector<std::uint32_t> pending{0};
-  parent[0] = 0;
-  while (!pending.empty()) {
-    const std::uint32_t t = pending.back();
-    pending.pop_back();
-    order.push_back(t);
-    for (std::uint32_t s : triangle_slots(owner[t])) {
-      const std::uint32_t across = left_of[triangulation_.twin(s)];
-      if (across != kUnset && parent[across] == kUnset) parent[across] = t, pending.push_back(across);
+// From every notch, the vertical rays that start into P's interior: up when an edge at the notch runs
+// to the right (its cross product with (0, 1) is positive), down when one runs to the left.
+void GeodesicTrees::add_chords(const Polygon& p) {
+  RayShooter shooter(p);
+  const Point origin(0, 0);
+  for (std::size_t v = 0; v < p.size(); ++v) {
+    if (!p.is_reflex(v)) continue;
+    const double in = p[v].x() - p[p.prev(v)].x(), out = p[p.next(v)].x() - p[v].x();
+    for (const int up : {1, -1}) {
+      if (!(up * in > 0 || up * out > 0)) continue;
+      const Point along(0, up);
+      const std::optional<RayShooter::Hit> hit = shooter.shoot_along(v, origin, along);
+      if (!hit) throw std::logic_error("geodesics: a vertical ray into P meets no boundary");
+      const std::uint32_t from = static_cast<std::uint32_t>(sites_.size());
+      sites_.push_back({v, true, FilteredPoint(to_exact(p[v]))});
+      QPoint end = to_exact(p[hit->vertex]);
+      if (!hit->at_vertex) {
+        // The edge crosses the vertical line x = p[v].x strictly between its ends.
+        const QPoint b = to_exact(p[p.next(hit->vertex)]);
+        end = end + ((Rational(p[v].x()) - end.x()) / (b.x() - end.x())) * (b - end);
+      }
+      sites_.push_back({hit->vertex, hit->at_vertex, FilteredPoint(end)});
+      chords_.push_back({from, from + 1});
     }
   }
-  std::vector<std::uint32_t> below(weight);
-  for (std::size_t k = order.size(); k-- > 1;) below[parent[order[k]]] += below[order[k]];
-  towards_terminal_.assign(slots, 0);
-  for (std::uint32_t s = 0; s < slots; ++s) {
-    const std::uint32_t here = left_of[s], there = left_of[triangulation_.twin(s)];
-    if (there == kUnset)  // s is polygon edge a -> a + 1, the outside beyond it
-      towards_terminal_[s] = !terminals_on_edge_[triangulation_.head(triangulation_.twin(s))].empty();
-    else if (here == kUnset)  // s is a polygon edge backwards, the whole triangulation beyond it
-      towards_terminal_[s] = below[0] > 0;
-    else
-      towards_terminal_[s] = (parent[there] == here ? below[there] : below[0] - below[here]) > 0;
+}
+
+// Sorts the sites along the boundary, merges those at one point and renumbers the chords' ends and the
+// terminals' sites; drops a chord found twice (from both its ends).
+void GeodesicTrees::sort_sites() {
+  const auto position = [&](const Site& s) {
+    const QPoint w = to_exact(p_[s.edge]);
+    return (s.point.exact - w) * (to_exact(p_[p_.next(s.edge)]) - w);
+  };
+  const auto before = [&](const Site& a, const Site& b) {
+    if (a.edge != b.edge) return a.edge < b.edge;
+    if (a.at_vertex || b.at_vertex) return a.at_vertex && !b.at_vertex;
+    return position(a) < position(b);
+  };
+  std::vector<std::uint32_t> order(sites_.size());
+  for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return before(sites_[a], sites_[b]); });
+  std::vector<std::uint32_t> renamed(sites_.size());
+  std::vector<Site> distinct;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const Site& s = sites_[order[k]];
+    if (distinct.empty() || before(distinct.back(), s)) distinct.push_back(s);
+    renamed[order[k]] = static_cast<std::uint32_t>(distinct.size() - 1);
   }
+  sites_ = std::move(distinct);
+  for (std::uint32_t& s : site_of_terminal_) s = renamed[s];
+  for (auto& [a, b] : chords_) {
+    a = renamed[a], b = renamed[b];
+    if (a > b) std::swap(a, b);
+  }
+  std::sort(chords_.begin(), chords_.end());
+  chords_.erase(std::unique(chords_.begin(), chords_.end()), chords_.end());
 }
 
-// The three slots with the triangle on the left of slot h (a -> b) on their left: a -> b, b -> c, c -> a.
-std::array<std::uint32_t, 3> GeodesicTrees::triangle_slots(std::uint32_t h) const {
-  const std::uint32_t b_to_c = triangulation_.twin(h) - 1;
-  return {h, b_to_c, triangulation_.twin(b_to_c) - 1};
+// The chords join sites on a circle without crossing: face 0 runs along the whole boundary, jumping
+// over each outermost chord; the face inside chord (i, j) runs from i to j the same way and back along
+// the chord. Each step along the boundary and each side of a chord is in one face: O(s + chords).
+void GeodesicTrees::build_faces() {
+  sides_.assign(chords_.size(), ChordSides{});
+  faces_.push_back(inner_face(0, static_cast<std::uint32_t>(sites_.size()), -1));
+  for (std::size_t c = 0; c < chords_.size(); ++c)
+    faces_.push_back(inner_face(chords_[c][0], chords_[c][1], static_cast<std::int32_t>(c)));
+  faces_at_site_.assign(sites_.size(), {});
+  for (std::uint32_t f = 0; f < faces_.size(); ++f)
+    for (std::uint32_t k = 0; k < faces_[f].size(); ++k) {
+      const Step& step = faces_[f][k];
+      faces_at_site_[step.from].push_back(f);
+      if (step.chord < 0) continue;
+      ChordSides& sides = sides_[static_cast<std::size_t>(step.chord)];
+      const std::size_t side = step.from < step.to ? 1 : 0;  // 1: the face outside the chord
+      sides.faces[side] = f, sides.steps[side] = k;
+    }
 }
 
-const FilteredPoint& GeodesicTrees::point(std::size_t terminal) const {
-  const Terminal& t = terminals_[terminal];
-  return t.at_vertex ? vertices_[t.edge] : edge_points_[terminal];
+// The face inside chord `chord` = (i, j) (or the whole boundary, i = 0 and j = the number of sites):
+// from each site the longest chord forward that stays within (i, j), else the boundary to the next site.
+std::vector<GeodesicTrees::Step> GeodesicTrees::inner_face(std::uint32_t i, std::uint32_t j, std::int32_t chord) {
+  const std::uint32_t count = static_cast<std::uint32_t>(sites_.size());
+  std::vector<Step> steps;
+  for (std::uint32_t k = i; k != j;) {
+    // chords_ is sorted: the chords from k are a range, the longest last.
+    auto at = std::upper_bound(chords_.begin(), chords_.end(), std::array<std::uint32_t, 2>{k, UINT32_MAX});
+    std::int32_t jump = -1;
+    while (at != chords_.begin() && (*(at - 1))[0] == k) {
+      --at;
+      const std::uint32_t end = (*at)[1];
+      if (end < j || (end == j && k != i)) {
+        jump = static_cast<std::int32_t>(at - chords_.begin());
+        break;
+      }
+    }
+    const std::uint32_t next = jump >= 0 ? chords_[static_cast<std::size_t>(jump)][1] : k + 1;
+    steps.push_back({k, next % count, jump});
+    k = next;
+  }
+  if (chord >= 0) steps.push_back({j, i, chord});
+  return steps;
 }
 
 void GeodesicTrees::path(std::size_t from, std::size_t to, std::vector<const FilteredPoint*>& out) {
   out.clear();
-  const FilteredPoint &start = point(from), &end = point(to);
-  if (&start == &end || start.exact == end.exact) {
-    out.push_back(&end);
-    return;
+  const std::uint32_t source = site_of_terminal_[from], root = site_of_terminal_[to];
+  out.push_back(&sites_[source].point);
+  if (source == root) return;
+  if (turn_by_root_[root].empty()) build(root);
+  const std::vector<std::uint32_t>& turn = turn_by_root_[root];
+  for (std::uint32_t id = turn[source]; id != root; id = turn[id]) {
+    if (id == kUnset) throw std::logic_error("geodesics: a site not reached by the walk");
+    out.push_back(&sites_[id].point);
   }
-  out.push_back(&start);
-  if (!built_[to]) build(to);
-  const Tree& tree = trees_by_root_[to];
-  const Terminal& source = terminals_[from];
-  const std::uint32_t root = terminals_[to].at_vertex ? static_cast<std::uint32_t>(terminals_[to].edge) : edge_root_id_;
-  std::uint32_t id = source.at_vertex ? tree.vertex_turn[source.edge] : tree.terminal_turn[from];
-  while (id != root) {
-    if (id == kUnset) throw std::logic_error("geodesics: a terminal not reached by the walk");
-    out.push_back(&vertices_[id]);
-    id = tree.vertex_turn[id];
-  }
-  out.push_back(&end);
+  out.push_back(&sites_[root].point);
 }
 
+// From the root every site of each face at it is seen directly; the walk enters every other face
+// through a chord of those, with the funnel (left end, root, right end).
 void GeodesicTrees::build(std::size_t root) {
   ++trees_;
-  built_[root] = 1;
-  Tree& tree = trees_by_root_[root];
-  tree.vertex_turn.assign(p_.size(), kUnset);
-  tree.terminal_turn.assign(terminals_.size(), kUnset);
-  root_point_ = &point(root);
-  root_id_ = terminals_[root].at_vertex ? static_cast<std::uint32_t>(terminals_[root].edge) : edge_root_id_;
-  if (terminals_[root].at_vertex) start_at_vertex(terminals_[root].edge, tree);
-  else start_inside_edge(root, tree);
-}
-
-// From vertex v every neighbour in the triangulation, and every point of the two edges at v, is seen
-// directly; the walk starts at the window opposite v in each triangle of v's fan.
-void GeodesicTrees::start_at_vertex(std::size_t v, Tree& tree) {
-  const std::uint32_t self = static_cast<std::uint32_t>(v);
-  for (std::size_t edge : {v, p_.prev(v)})
-    for (std::uint32_t t : terminals_on_edge_[edge]) tree.terminal_turn[t] = self;
-  const std::uint32_t first = triangulation_.row_begin(v), last = triangulation_.row_end(v);
-  for (std::uint32_t h = first; h < last; ++h) tree.vertex_turn[triangulation_.head(h)] = self;
-  const std::uint32_t mid = funnel_middle();
-  for (std::uint32_t h = first; h + 1 < last; ++h) {
-    set_funnel_entry(mid - 1, triangulation_.head(h + 1));
-    set_funnel_entry(mid, self);
-    set_funnel_entry(mid + 1, triangulation_.head(h));
-    const std::uint32_t opposite = triangulation_.twin(h) - 1;
-    if (towards_terminal_[opposite]) walk({opposite, mid - 1, mid + 1, mid, mid, self}, tree);
+  root_ = static_cast<std::uint32_t>(root);
+  std::vector<std::uint32_t>& turn = turn_by_root_[root];
+  turn.assign(sites_.size(), kUnset);
+  const std::uint32_t mid = static_cast<std::uint32_t>(faces_.size() + 3);
+  set_funnel_entry(mid, root_);
+  for (std::uint32_t f : faces_at_site_[root])
+    for (const Step& step : faces_[f])
+      if (step.from != root_) turn[step.from] = root_;
+  for (std::uint32_t f : faces_at_site_[root]) {
+    for (const Step& step : faces_[f]) {
+      if (step.chord < 0 || step.from == root_ || step.to == root_) continue;
+      const ChordSides& sides = sides_[static_cast<std::size_t>(step.chord)];
+      const std::size_t beyond = sides.faces[0] == f ? 1 : 0;
+      set_funnel_entry(mid - 1, step.to);
+      set_funnel_entry(mid + 1, step.from);
+      enter({sides.faces[beyond], sides.steps[beyond], mid - 1, mid + 1, mid, false, false, false}, turn);
+    }
   }
 }
 
-// A root inside edge (u, u+1) sees that edge and the triangle on it; the walk starts at that edge,
-// looking into the triangle: u on the left, u+1 on the right.
-void GeodesicTrees::start_inside_edge(std::size_t root, Tree& tree) {
-  const std::size_t u = terminals_[root].edge, w = p_.next(u);
-  for (std::uint32_t t : terminals_on_edge_[u]) tree.terminal_turn[t] = edge_root_id_;
-  tree.vertex_turn[u] = tree.vertex_turn[w] = edge_root_id_;
-  const std::uint32_t mid = funnel_middle();
-  set_funnel_entry(mid - 1, static_cast<std::uint32_t>(u));
-  set_funnel_entry(mid, edge_root_id_);
-  set_funnel_entry(mid + 1, static_cast<std::uint32_t>(w));
-  const std::uint32_t into_triangle = triangulation_.twin(triangulation_.row_begin(u));
-  if (towards_terminal_[into_triangle]) walk({into_triangle, mid - 1, mid + 1, mid, mid, edge_root_id_}, tree);
-}
-
-// Depth first over the dual tree. A window's triangle has its third vertex c just before the left end in
-// the right end's counter-clockwise row (VisibilityGraph::visible_from), unless the window is the polygon
-// edge right -> right + 1.
-void GeodesicTrees::walk(const Window& first, Tree& tree) {
+// Depth first over the dual tree from window `first`. Within a face entered through its step p (from
+// the window's left end x to its right end y, counter-clockwise), the other sites follow clockwise from
+// x to y: their funnel vertices run from lo to hi.
+void GeodesicTrees::enter(const Window& first, std::vector<std::uint32_t>& turn) {
   stack_.assign(1, first);
   while (!stack_.empty()) {
     const Window w = stack_.back();
     stack_.pop_back();
-    if (w.slot == kRestore) {
-      set_funnel_entry(w.write_at, w.id);
+    if (w.restore) {
+      set_funnel_entry(w.lo, w.hi);
       continue;
     }
-    stack_.push_back({kRestore, 0, 0, 0, w.write_at, funnel_[w.write_at]});
-    set_funnel_entry(w.write_at, w.id);
-    const std::uint32_t right = triangulation_.head(triangulation_.twin(w.slot));
-    if (w.slot == triangulation_.row_begin(right)) {
-      reach_edge(right, w, tree);
-      continue;
+    const std::vector<Step>& face = faces_[w.face];
+    const std::uint32_t x = face[w.step].from, y = face[w.step].to;
+    for (const auto& [write, at, site] : {std::tuple{w.write_lo, w.lo, x}, std::tuple{w.write_hi, w.hi, y}}) {
+      if (!write) continue;
+      stack_.push_back({0, 0, at, funnel_[at], 0, false, false, true});
+      set_funnel_entry(at, site);
     }
-    ++triangles_;
-    const std::uint32_t c = triangulation_.head(w.slot - 1);
-    const std::uint32_t k = static_cast<std::uint32_t>(tangent(w, vertices_[c]));
-    if (tree.vertex_turn[c] == kUnset) tree.vertex_turn[c] = last_turn(funnel_[k], vertices_[c], tree);
-    const std::uint32_t towards_right = w.slot - 1, towards_left = triangulation_.twin(w.slot - 1) - 1;
-    if (towards_terminal_[towards_right]) stack_.push_back({towards_right, k - 1, w.hi, std::max(w.apex, k), k - 1, c});
-    if (towards_terminal_[towards_left]) stack_.push_back({towards_left, w.lo, k + 1, std::min(w.apex, k), k + 1, c});
+    ++faces_entered_;
+    const std::size_t size = face.size();
+    std::uint32_t previous = w.lo;  // the funnel vertex of the site before, clockwise
+    for (std::size_t back = 1; back < size; ++back) {
+      const Step& step = face[(w.step + size - back) % size];
+      const std::uint32_t site = step.from;
+      std::uint32_t reached = w.hi;
+      if (site != y) {
+        reached = static_cast<std::uint32_t>(
+            funnel_tangent(funnel_points_, w.lo, w.hi, w.apex, sites_[site].point, previous, tangent_steps_));
+        if (turn[site] == kUnset) turn[site] = last_turn(funnel_[reached], site, turn);
+      }
+      if (reached < previous) throw std::logic_error("geodesics: funnel vertices out of order around a face");
+      if (step.chord >= 0) {
+        // The chord from step.to (its left end) to site (its right end), seen from the root.
+        const ChordSides& sides = sides_[static_cast<std::size_t>(step.chord)];
+        const std::size_t beyond = sides.faces[0] == w.face ? 1 : 0;
+        const bool new_lo = step.to != x, new_hi = site != y;
+        stack_.push_back({sides.faces[beyond], sides.steps[beyond], new_lo ? previous - 1 : w.lo,
+                          new_hi ? reached + 1 : w.hi, std::clamp(w.apex, previous, reached), new_lo, new_hi, false});
+      }
+      previous = reached;
+    }
   }
 }
 
-// The walk reaches polygon edge (edge, edge + 1) through window w: the last turns before the terminals
-// inside it.
-void GeodesicTrees::reach_edge(std::size_t edge, const Window& w, Tree& tree) {
-  for (std::uint32_t t : terminals_on_edge_[edge])
-    if (tree.terminal_turn[t] == kUnset) tree.terminal_turn[t] = last_turn(funnel_[tangent(w, edge_points_[t])], edge_points_[t], tree);
+// The geodesic reaches site c straight from funnel vertex u: it turns at u unless u is the root or its
+// last turn g, u and c lie on one line (the geodesic then runs straight from g through u to c).
+std::uint32_t GeodesicTrees::last_turn(std::uint32_t u, std::uint32_t c, const std::vector<std::uint32_t>& turn) const {
+  if (u == root_) return u;
+  const std::uint32_t g = turn[u];
+  return orient(sites_[g].point, sites_[u].point, sites_[c].point) == 0 ? g : u;
 }
 
-std::size_t GeodesicTrees::tangent(const Window& w, const FilteredPoint& c) {
-  return funnel_tangent(funnel_points_, w.lo, w.hi, w.apex, c, std::nullopt, tangent_steps_);
-}
-
-// The geodesic reaches c straight from funnel vertex u: it turns at u unless u is the root or its last
-// turn g, u and c lie on one line (the geodesic then runs straight from g through u to c).
-std::uint32_t GeodesicTrees::last_turn(std::uint32_t u, const FilteredPoint& c, const Tree& tree) const {
-  if (u == root_id_) return u;
-  const std::uint32_t g = tree.vertex_turn[u];
-  return orient(point_of(g), point_of(u), c) == 0 ? g : u;
-}
-
-// Sets funnel entry `at` to the vertex or root `id`.
-void GeodesicTrees::set_funnel_entry(std::size_t at, std::uint32_t id) {
-  funnel_[at] = id;
-  funnel_points_[at] = &point_of(id);
+void GeodesicTrees::set_funnel_entry(std::size_t at, std::uint32_t site) {
+  funnel_[at] = site;
+  funnel_points_[at] = &sites_[site].point;
 }
 
 }  // namespace pd

@@ -4,34 +4,42 @@
 // Method: the funnel walk of Lee and Preparata ("Euclidean shortest paths in the presence of
 // rectilinear barriers", Networks 14, 1984) and of Guibas, Hershberger, Leven, Sharir and Tarjan
 // ("Linear-time algorithms for visibility and shortest path problems inside triangulated simple
-// polygons", Algorithmica 2, 1987, Sec. 2), over the triangulation that VisibilityGraph already has.
-// From a root s, every triangle is entered once, through a window (a diagonal); the shortest paths
-// from s to the points of the window form a funnel: two concave chains from an apex to the window's
-// ends. The third vertex c of the triangle beyond is reached from the funnel vertex whose wedge holds
-// it, and the funnel splits there into the funnels of the triangle's two other sides. That vertex is
-// searched from both ends of the funnel at once (first_holding_from_ends), so a split into parts of
-// sizes a and b costs O(1 + log min(a, b)) orientations and the whole walk O(n), as with the finger
-// search trees of Guibas et al. The funnel lives in one array, where a child changes one entry,
-// restored when its subtree is done (a depth-first walk with an explicit stack). The tree keeps, for
-// every vertex of the triangles it enters and every terminal inside an edge (found by the same search
-// in the funnel of the edge's triangle, O(log n) each), the last vertex before it where its geodesic
-// turns, or the root: O(n + terminals log n) per root, O(n) space. The walk enters a window
-// only when a terminal lies beyond it (counted once for all roots over the dual tree, O(n)): the
-// geodesics to the terminals cross only the triangles between, and every vertex of those is reached.
+// polygons", Algorithmica 2, 1987, Sec. 2), over a convex decomposition with O(r) faces in place of a
+// triangulation with n - 2, so that a tree costs O(r log r) instead of O(n).
 //
-// Turns only: a geodesic that passes straight through a vertex (collinear with the points before and
+// The decomposition: from every notch, a vertical segment up, and one down, wherever that direction
+// points into P, to the first point of the boundary it meets (ray_shooting.h, O(r log n) each). The
+// segments are parallel, so no two cross, and each joins two points of the boundary: they are chords,
+// the dual graph of the faces is a tree, and P's geodesic between two points crosses exactly the
+// chords on the dual path between their faces, each once. Every face is convex: a notch's angle is cut
+// by the vertical directions inside it into parts of at most 180 degrees (one of them exactly 180 when
+// both are inside), and every other corner is a corner of P or part of one, or part of the 180 degrees
+// at a point inside an edge. So there are at most 2r chords and 2r + 1 faces, built in
+// O(n + r^2 log n + s log s) for the s points that matter (the sites: notches, chord ends and terminals,
+// sorted along the boundary).
+//
+// The walk: from a root, every face is entered once, through a window (a chord); the shortest paths
+// from the root to the points of the window form a funnel: two concave chains from an apex to the
+// window's ends. Each site of the face is reached from the funnel vertex whose wedge holds it
+// (funnel_tangent); going round the face from the window's left end to its right end these vertices
+// move monotonically, so each search starts where the last ended (first_holding). For every chord of
+// the face, the funnel of the face beyond is the part of the funnel between its ends' vertices, with
+// the chord's ends as its new ends: in one array, where a window changes at most its two ends,
+// restored when its subtree is done (a depth-first walk with an explicit stack). A funnel's vertices
+// are the root, notches and chord ends, O(r) of them, so a tree costs O(s log r) and O(s) space.
+//
+// Turns only: a geodesic that passes straight through a point (collinear with the points before and
 // after it) does not list it, so a path has O(r) points, the notches where it turns and its two ends.
 // Its first point after a start X in P lies on the ray along which it leaves X, at or beyond the first
 // point of the boundary that it meets.
 //
 // Exact: every decision is an orientation of three points, taken with CGAL's filtered predicate when
 // all three are in doubles, else on intervals and, when they do not settle it, on exact rationals (a
-// root or a terminal may be a rational point inside an edge); a tie in a funnel search compares
-// positions along a line exactly.
+// chord's far end, the root or a terminal may be a rational point inside an edge); a tie in a funnel
+// search compares positions along a line exactly.
 #pragma once
 
 #include "algorithms/boundary_chains.h"
-#include "algorithms/visibility.h"
 #include "core/filtered.h"
 #include "core/geometry.h"
 
@@ -40,6 +48,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 namespace pd {
@@ -134,71 +143,76 @@ class GeodesicTrees {
  public:
   using Terminal = boundary::SegmentSearch::Contact;  // a vertex (at_vertex) or a point inside an edge
 
-  // Pre: p simple and counter-clockwise, `triangulation` built on it, every terminal on its boundary.
-  GeodesicTrees(const Polygon& p, const VisibilityGraph& triangulation, const std::vector<Terminal>& terminals);
+  // Pre: p simple and counter-clockwise, every terminal on its boundary. Builds the decomposition.
+  GeodesicTrees(const Polygon& p, const std::vector<Terminal>& terminals);
   GeodesicTrees(const GeodesicTrees&) = delete;
   GeodesicTrees& operator=(const GeodesicTrees&) = delete;
 
   // Replaces `out` with the geodesic from terminal `from` to terminal `to`: its first point, the vertices
   // where it turns in order, and its last point (only `to`'s point when the two coincide). The tree
-  // rooted at `to` is built the first time it is needed, O(n + terminals * log n); then O(length).
+  // rooted at `to` is built the first time it is needed, O(s log r); then O(length).
   void path(std::size_t from, std::size_t to, std::vector<const FilteredPoint*>& out);
-  // The terminal's point; a terminal at a vertex shares the vertex's point object.
-  const FilteredPoint& point(std::size_t terminal) const;
+  // The terminal's point; terminals at one point, and a terminal at a notch and the notch, share one
+  // point object.
+  const FilteredPoint& point(std::size_t terminal) const { return sites_[site_of_terminal_[terminal]].point; }
 
+  std::int64_t chords() const { return static_cast<std::int64_t>(chords_.size()); }
   std::int64_t trees() const { return trees_; }
-  std::int64_t triangles() const { return triangles_; }
+  std::int64_t faces_entered() const { return faces_entered_; }
   std::int64_t tangent_steps() const { return tangent_steps_; }
 
  private:
   static constexpr std::uint32_t kUnset = UINT32_MAX;
-  // Per vertex and per terminal, the last turn before it on its geodesic: a vertex id, or the root's
-  // (edge_root_id_ for a root inside an edge).
-  struct Tree {
-    std::vector<std::uint32_t> vertex_turn, terminal_turn;
+  // A point of the boundary that matters, in order along the boundary from vertex 0: a vertex, or a
+  // point inside edge (edge, edge + 1).
+  struct Site {
+    std::size_t edge;
+    bool at_vertex;
+    FilteredPoint point;
   };
-  // One window of the walk: the half-edge right end -> left end (as seen from the root) and the funnel
-  // F[lo..hi] with its apex; entering it first sets F[write_at] (a new end) to `id`. A window whose slot
-  // is kRestore only sets F[write_at] back to `id`, once the subtree of the window that changed it is
-  // done.
+  // One side of a face's boundary, counter-clockwise: from site `from` to site `to`, along a chord or
+  // (chord < 0) along the boundary of P.
+  struct Step {
+    std::uint32_t from, to;
+    std::int32_t chord;
+  };
+  // Where chord c lies on the boundary of the face on each of its sides: faces[k], steps[k].
+  struct ChordSides {
+    std::array<std::uint32_t, 2> faces{}, steps{};
+  };
+  // A face entered through its step `step` with the funnel F[lo..hi]; entering first sets F[lo] and
+  // F[hi] to the chord's ends when `write_lo`, `write_hi`. A restore only sets F[lo] back to site
+  // `hi` once the subtree of the window that changed it is done.
   struct Window {
-    std::uint32_t slot, lo, hi, apex, write_at, id;
+    std::uint32_t face, step, lo, hi, apex;
+    bool write_lo, write_hi, restore;
   };
-  static constexpr std::uint32_t kRestore = UINT32_MAX;
 
-  void mark_windows_towards_terminals();
-  std::array<std::uint32_t, 3> triangle_slots(std::uint32_t h) const;
+  void add_chords(const Polygon& p);
+  void sort_sites();
+  void build_faces();
+  std::vector<Step> inner_face(std::uint32_t i, std::uint32_t j, std::int32_t chord);
   void build(std::size_t root);
-  void start_at_vertex(std::size_t v, Tree& tree);
-  void start_inside_edge(std::size_t root, Tree& tree);
-  void walk(const Window& first, Tree& tree);
-  void reach_edge(std::size_t edge, const Window& w, Tree& tree);
-  std::size_t tangent(const Window& w, const FilteredPoint& c);
-  std::uint32_t last_turn(std::uint32_t reached_from, const FilteredPoint& c, const Tree& tree) const;
-  void set_funnel_entry(std::size_t at, std::uint32_t id);
-  const FilteredPoint& point_of(std::uint32_t id) const { return id == edge_root_id_ ? *root_point_ : vertices_[id]; }
-  // The funnel array's middle, where each walk starts: a walk adds at most one entry on either side per
-  // triangle, at most n - 2 of them.
-  std::uint32_t funnel_middle() const { return static_cast<std::uint32_t>(p_.size() + 3); }
+  void enter(const Window& w, std::vector<std::uint32_t>& turn);
+  std::uint32_t last_turn(std::uint32_t u, std::uint32_t c, const std::vector<std::uint32_t>& turn) const;
+  void set_funnel_entry(std::size_t at, std::uint32_t site);
 
   const Polygon& p_;
-  const VisibilityGraph& triangulation_;
-  std::vector<Terminal> terminals_;
-  std::vector<FilteredPoint> vertices_, edge_points_;  // edge_points_: per terminal, used inside edges
-  std::vector<std::vector<std::uint32_t>> terminals_on_edge_;  // per edge, its terminals inside it
-  // Per half-edge slot, whether a terminal (a vertex, counted in the triangle on its forward edge, or
-  // a point inside an edge) lies in the part of the triangulation beyond it, on its right.
-  std::vector<char> towards_terminal_;
-  std::vector<Tree> trees_by_root_;
-  std::vector<char> built_;
-  const std::uint32_t edge_root_id_;  // the id of a root inside an edge
-  std::uint32_t root_id_ = 0;         // the id of the root being walked
-  // The walk's funnel (ids), its entries as points for funnel_tangent, and the root being walked.
+  // Before sort_sites: one site per notch, chord end and terminal; after it, the distinct ones in order.
+  std::vector<Site> sites_;
+  std::vector<std::uint32_t> site_of_terminal_;
+  std::vector<std::array<std::uint32_t, 2>> chords_;  // site pairs, the smaller first
+  std::vector<ChordSides> sides_;
+  std::vector<std::vector<Step>> faces_;  // face 0 holds the boundary from the last site to site 0
+  std::vector<std::vector<std::uint32_t>> faces_at_site_;
+  // Per root (a site), the last turn before each site on its geodesic: a site, or the root's.
+  std::vector<std::vector<std::uint32_t>> turn_by_root_;
+  std::uint32_t root_ = 0;
+  // The walk's funnel (sites), its entries as points for funnel_tangent, and its stack.
   std::vector<std::uint32_t> funnel_;
   std::vector<const FilteredPoint*> funnel_points_;
   std::vector<Window> stack_;
-  const FilteredPoint* root_point_ = nullptr;
-  std::int64_t trees_ = 0, triangles_ = 0, tangent_steps_ = 0;
+  std::int64_t trees_ = 0, faces_entered_ = 0, tangent_steps_ = 0;
 };
 
 }  // namespace pd

@@ -39,14 +39,15 @@ int dot_sign(const Point& a, const Point& b, const Point& c, const Point& d) {
   return sign_of_products(a.x(), b.x(), c.x(), d.x(), a.y(), b.y(), c.y(), d.y(), 1);
 }
 
-// The ray from o in direction flag * (w - o); `side` is +1 left of it.
+// The ray from o in direction flag * (b - a); `side` is +1 left of it.
 struct RayShooter::Ray {
   const Point& o;
-  const Point& w;
+  const Point& a;
+  const Point& b;
   int flag;
-  int side(const Point& v) const { return flag * orient(o, w, v); }
-  int edge_turn(const Point& a, const Point& b) const { return flag * cross_sign(o, w, a, b); }
-  int ahead(const Point& v) const { return flag * dot_sign(o, v, o, w); }
+  int side(const Point& v) const { return flag * cross_sign(a, b, o, v); }
+  int edge_turn(const Point& e0, const Point& e1) const { return flag * cross_sign(a, b, e0, e1); }
+  int ahead(const Point& v) const { return flag * dot_sign(o, v, a, b); }
 };
 
 struct RayShooter::Contact {
@@ -57,15 +58,16 @@ struct RayShooter::Contact {
 namespace {
 
 // A contact's position along the ray, up to a positive factor ((x - o) . direction), in number type
-// T (intervals to filter, rationals to decide). Every step is stored as a T, never left as a lazy
-// expression over temporaries.
+// T (intervals to filter, rationals to decide): the contact is vertex u, or a point inside the edge u v.
+// Every step is stored as a T, never left as a lazy expression over temporaries.
 template <class T>
-T position(const Point& o, const Point& w, int flag, const Point& a, const Point& b, bool at_vertex) {
-  const T ox(o.x()), oy(o.y()), dx = T(flag) * (T(w.x()) - ox), dy = T(flag) * (T(w.y()) - oy);
-  T x(a.x()), y(a.y());
+T position(const RayShooter::Ray& ray, const Point& u, const Point& v, bool at_vertex) {
+  const T ox(ray.o.x()), oy(ray.o.y());
+  const T dx = T(ray.flag) * (T(ray.b.x()) - T(ray.a.x())), dy = T(ray.flag) * (T(ray.b.y()) - T(ray.a.y()));
+  T x(u.x()), y(u.y());
   if (!at_vertex) {
-    const T ex = T(b.x()) - x, ey = T(b.y()) - y;
-    const T sa = dx * (y - oy) - dy * (x - ox), sb = dx * (T(b.y()) - oy) - dy * (T(b.x()) - ox);
+    const T ex = T(v.x()) - x, ey = T(v.y()) - y;
+    const T sa = dx * (y - oy) - dy * (x - ox), sb = dx * (T(v.y()) - oy) - dy * (T(v.x()) - ox);
     const T lambda = sa / (sa - sb);
     x = x + lambda * ex;
     y = y + lambda * ey;
@@ -113,19 +115,25 @@ void RayShooter::cut_into_arcs() {
 // behind the origin (exact tests on the box's corners, which are input coordinates). Contacts are
 // ordered along the ray by interval positions, and by rationals when the intervals overlap.
 std::optional<RayShooter::Hit> RayShooter::shoot(std::size_t origin, std::size_t through, bool toward) {
-  const Ray ray{p_[origin], p_[through], toward ? 1 : -1};
+  return first_hit({p_[origin], p_[origin], p_[through], toward ? 1 : -1}, origin);
+}
+
+std::optional<RayShooter::Hit> RayShooter::shoot_along(std::size_t origin, const Point& a, const Point& b) {
+  return first_hit({p_[origin], a, b, 1}, origin);
+}
+
+std::optional<RayShooter::Hit> RayShooter::first_hit(const Ray& ray, std::size_t origin) {
   std::vector<Contact> contacts;
   for (std::size_t arc = 0; arc < arc_start_.size(); ++arc)
     if (!box_missed(ray, arc)) contacts_on_arc(ray, arc, contacts);
   CGAL::Interval_nt<> best_at(0);
   auto exact = [&](const Contact& c) {
-    return position<Rational>(ray.o, ray.w, ray.flag, p_[c.vertex], p_[p_.next(c.vertex)], c.at_vertex);
+    return position<Rational>(ray, p_[c.vertex], p_[p_.next(c.vertex)], c.at_vertex);
   };
   std::optional<Contact> best_contact;
   for (const Contact& c : contacts) {
     if (c.at_vertex && c.vertex == origin) continue;
-    const CGAL::Interval_nt<> at =
-        position<CGAL::Interval_nt<>>(ray.o, ray.w, ray.flag, p_[c.vertex], p_[p_.next(c.vertex)], c.at_vertex);
+    const CGAL::Interval_nt<> at = position<CGAL::Interval_nt<>>(ray, p_[c.vertex], p_[p_.next(c.vertex)], c.at_vertex);
     if (at.sup() <= 0 || (at.inf() <= 0 && exact(c) <= 0)) continue;
     const bool nearer = !best_contact || at.sup() < best_at.inf() ||
                         (at.inf() <= best_at.sup() && exact(c) < exact(*best_contact));

@@ -1,5 +1,6 @@
 // Ray shooting from polygon vertices, for keil-snoeyink-reduced, Chazelle-Dobkin's loose rays and its
-// views across the notches (chazelle_dobkin_tables.h, chazelle_dobkin_patterns.cpp).
+// views across the notches (chazelle_dobkin_tables.h, chazelle_dobkin_patterns.cpp), and the vertical
+// chords that its geodesics walk (geodesics.h).
 //
 // Keil & Snoeyink (001, Sec. 4) shoot O(r^2) rays in O(log n) each after linear preprocessing
 // (geodesic triangulations, Chazelle et al.; or Hershberger-Suri). This is a simpler structure with a
@@ -40,13 +41,17 @@ class RayShooter {
   // Pre: origin != through. Returns nothing when the ray meets no boundary point beyond the origin
   // (it cannot when it starts into p's interior).
   std::optional<Hit> shoot(std::size_t origin, std::size_t through, bool toward);
+  // The ray from p[origin] in direction b - a (a != b). The same precondition and answer.
+  std::optional<Hit> shoot_along(std::size_t origin, const Point& a, const Point& b);
 
   std::size_t arcs() const { return arc_start_.size(); }
   std::int64_t probes() const { return probes_; }
 
+  struct Ray;  // a ray and its exact tests, in ray_shooting.cpp
+
  private:
-  struct Ray;
   struct Contact;
+  std::optional<Hit> first_hit(const Ray& ray, std::size_t origin);
   struct Box {
     double x0, x1, y0, y1;
   };

@@ -459,16 +459,29 @@ std::size_t same_count(const Polygon& p, const std::string& where) {
 // join points that see each other, turn at every point it lists between its ends, and be as long as the
 // brute force's shortest path: with all those points as terminals, and with only the notches and the
 // points inside edges; each time with a second terminal at the first point inside an edge (two ray
-// ends at one point).
+// ends at one point). With `at_vertical_crossings`, the points inside edges are instead every point
+// where an edge crosses the vertical line through a notch: the ends of the chords that the geodesics'
+// decomposition draws are among them, so terminals and roots lie on chords.
 struct GeodesicCheck {
-  explicit GeodesicCheck(const Polygon& polygon) : p(polygon) {
+  explicit GeodesicCheck(const Polygon& polygon, bool at_vertical_crossings = false) : p(polygon) {
     for (std::size_t v = 0; v < p.size(); ++v) {
       corners.push_back(to_exact(p[v]));
       terminals.push_back({v, true, corners.back()});
     }
-    for (std::size_t e = 0; e < p.size(); e += 3) {
+    for (std::size_t e = 0; e < p.size(); ++e) {
       const QPoint a = to_exact(p[e]), b = to_exact(p[p.next(e)]);
-      terminals.push_back({e, false, a + (b - a) / Rational(3)});
+      if (!at_vertical_crossings) {
+        if (e % 3 == 0) terminals.push_back({e, false, a + (b - a) / Rational(3)});
+        continue;
+      }
+      std::vector<Rational> crossings;
+      for (std::size_t v = 0; v < p.size(); ++v) {
+        const Rational x(p[v].x());
+        if (p.is_reflex(v) && (a.x() - x) * (b.x() - x) < 0) crossings.push_back((x - a.x()) / (b.x() - a.x()));
+      }
+      std::sort(crossings.begin(), crossings.end());
+      crossings.erase(std::unique(crossings.begin(), crossings.end()), crossings.end());
+      for (const Rational& t : crossings) terminals.push_back({e, false, a + t * (b - a)});
     }
     const std::size_t count = terminals.size();
     sees.assign(count * count, 0);
@@ -575,23 +588,32 @@ TEST(Geodesics, ShortestPathsOfTheBruteForce) {
     if (on_notch_edge) u.insert(u.begin() + 7, Point(2, 4));
     polygons.emplace_back(Polygon::make(u), on_notch_edge ? "U with a flat vertex on a notch's edge" : "U");
   }
+  // Lattice polygons: vertical edges, notches above one another, chords that end at vertices or run
+  // into a vertex's corner; every point on a chord's line inside an edge a terminal.
+  const std::size_t crossings_from = polygons.size();
+  std::mt19937 rng(8);
+  for (int round = 0; round < 120; ++round)
+    polygons.emplace_back(lattice::lattice_polygon(8 + round % 9, 5 + round % 3, rng), "lattice polygon " + std::to_string(round));
+  for (int round = 0; round < 60; ++round)
+    if (const std::optional<Polygon> p = lattice::notched_rectangle(rng)) polygons.emplace_back(*p, "notched rectangle " + std::to_string(round));
   std::int64_t checked = 0, bent = 0;
-  for (const auto& [p, where] : polygons) {
-    const GeodesicCheck brute(p);
-    const VisibilityGraph triangulation(p);
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    const auto& [p, where] = polygons[k];
+    const GeodesicCheck brute(p, k >= crossings_from);
     const std::size_t count = brute.terminals.size();
     // Every vertex and point as a terminal, then only the notches and the points inside edges, so that
-    // the walks leave out the parts of the triangulation with no terminal.
+    // the faces of the decomposition have few sites.
     std::vector<std::size_t> every(count), sparse;
     for (std::size_t t = 0; t < count; ++t) {
       every[t] = t;
       if (!brute.terminals[t].at_vertex || p.is_reflex(brute.terminals[t].edge)) sparse.push_back(t);
     }
-    for (std::vector<std::size_t>* chosen : {&every, &sparse}) chosen->push_back(p.size());
+    if (count > p.size())
+      for (std::vector<std::size_t>* chosen : {&every, &sparse}) chosen->push_back(p.size());
     for (const std::vector<std::size_t>* chosen : {&every, &sparse}) {
       std::vector<GeodesicTrees::Terminal> terminals;
       for (std::size_t t : *chosen) terminals.push_back(brute.terminals[t]);
-      GeodesicTrees trees(p, triangulation, terminals);
+      GeodesicTrees trees(p, terminals);
       std::vector<const FilteredPoint*> path;
       for (std::size_t from = 0; from < chosen->size(); ++from)
         for (std::size_t to = 0; to < chosen->size(); ++to) {
