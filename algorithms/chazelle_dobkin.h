@@ -41,9 +41,8 @@
 //   that needs the edge turned further than that point is missed: a compromise of exactness against
 //   the thesis's extreme (a symbolic perturbation would remove it); no test has met such a case.
 // - STEP 3's X4 term is left to the variant (x4_term).
-// Deviation: superranges are replaced by ray shooting or by a triangulation's walks, whichever bound is
-// smaller (Views::kCheaperBound, chazelle_dobkin_patterns.h), which makes the preprocessing
-// O(min(n + r^3 log n, n log n + n r + r^2 log n)) in place of O(n + r^2 log n).
+// Deviation: superranges are replaced by trees of geodesics from each notch over a decomposition by
+// vertical chords (chazelle_dobkin_patterns.h), in the same O(n + r^2 log n) preprocessing.
 //
 // Time, apart from x4_term: that preprocessing; the joint of each of the O(r^2) stored subtrees is
 // built once; then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each O(1) (Theorems 13

@@ -156,21 +156,20 @@
 //   81,892 / 184,936, 4.21 s (8,084 and 58,858 tests; 4.1-4.7 s at r = 200, where STEP 2's X3 tests
 //   take most of the time).
 // - Rays are clipped by ray shooting on convex arcs (algorithms/ray_shooting.h), O(r log n) per ray;
-//   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (views across the notches by
-//   ray shooting or a triangulation's walks in place of superranges; see chazelle_dobkin_patterns.h).
-//   The geodesic trees walk P's decomposition by vertical chords (algorithms/geodesics.h), built
+//   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (views across the notches from
+//   trees of geodesics in place of superranges; see chazelle_dobkin_patterns.h). The scans' geodesic
+//   trees walk a decomposition of P by vertical chords of their own (algorithms/geodesics.h), built
 //   when a scan first needs a tree (on the reference run's comb, convex, few-notches and spiral
-//   polygons none does); P is triangulated only for the views' walks.
+//   polygons none does). P is never triangulated.
 //
-// Time: the views O(min(n + r^3 log n, n log n + n r + r^2 log n)) (chazelle_dobkin_patterns.h), the
-// vertical chords O(n + r^2 log n) once a scan needs a tree, O(r^2 log r) for the lists, O(r log r) for
-// each of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per test); STEP
-// 3's X4 term O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is O(1) for
-// r < 32768), O(r^3) over the O(r^2) intervals; the checks of the O(r) patterns laid out
-// O(r^2 log(n/r)); STEP 5 O(n + r^2 log(n/r)) (chazelle_dobkin.h). Worst case
-// O(n + r^3 + min(r^3 log n, n log n + n r)), the last term the views' (r^2 log n is at most n when
-// r^2 log n <= n, and O(r^3) otherwise, since then log n = O(log r)); the thesis's O(n + r^3) needs
-// superranges in place of the views (Theorem 11). Space O(n + r^2) for the chords and the trees,
+// Time: the views O(n + r^2 log n) (chazelle_dobkin_patterns.h), the loose rays O(r^2 log n), the
+// scans' vertical chords O(n + r^2 log n) once a scan needs a tree, O(r^2 log r) for the lists,
+// O(r log r) for each of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per
+// test); STEP 3's X4 term O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is
+// O(1) for r < 32768), O(r^3) over the O(r^2) intervals; the checks of the O(r) patterns laid out
+// O(r^2 log(n/r)); STEP 5 O(n + r^2 log(n/r)) (chazelle_dobkin.h). Worst case O(n + r^3), the
+// thesis's: r^2 log n is at most n when r^2 log n <= n, and O(r^3) otherwise, since then
+// log n = O(log r). Space O(n + r^2) for the chords and the trees,
 // O(r^3) for the rows (a row per interval with a witness) and O(r^2) rationals for the lists and loose
 // points. Pre: a simple counter-clockwise polygon with fewer than 32768 notches. Output: an optimal
 // convex decomposition (OPT = r + 1 - the most compatible patterns) under A18', Steiner points exact.
@@ -200,7 +199,7 @@ Decomposition chazelle_dobkin(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n+r^3+min(r^3*log(n),n*log(n)+n*r)", "== OPT",
+REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin", Kind::Convex, true, true, "n+r^3", "== OPT",
                              "Chazelle thesis (000) Sec. 2.4, Def. 2.4, Thm 18, Lemma 9", 20000, chazelle_dobkin});
 
 }  // namespace pd

@@ -9,15 +9,12 @@
 // with Theorem 15's O(r log(n/r)) test. A candidate is tried only when its count would beat the best so
 // far, so the tests actually made are often far fewer. Past its O(1) angle tests, a candidate's
 // segments are tested against the boundary's convex chains, O(r log(n/r)) (Theorem 15).
-// Deviation: superranges are replaced by ray shooting from each notch or by a triangulation's walks,
-// whichever bound is smaller (Views::kCheaperBound, chazelle_dobkin_patterns.h), so the preprocessing
-// is O(min(n + r^3 log n, n log n + n r + r^2 log n)) where the thesis has O(n + r^2 log n); Theorem
-// 17's bound is unchanged.
+// Deviation: superranges are replaced by trees of geodesics from each notch over a decomposition by
+// vertical chords (chazelle_dobkin_patterns.h), in the same O(n + r^2 log n) preprocessing.
 //
-// Time: O(min(n + r^3 log n, n log n + n r + r^2 log n)) preprocessing, O(r^4) pattern tests: the X3 tests of STEPs 2 and 4 O(r^3),
+// Time: O(n + r^2 log n) preprocessing, O(r^4) pattern tests: the X3 tests of STEPs 2 and 4 O(r^3),
 // O(1) each (chazelle_dobkin.h); the X4 tests O(r^4), each O(1) or, past the constant-time tests,
-// O(r log(n/r)); STEP 5 O(n + r^2 log(n/r)): O(n + r^5 log(n/r)) (Theorem 17; r^3 log n is
-// O(n + r^5 log(n/r))). Space O(r^2 + n). Pre: a
+// O(r log(n/r)); STEP 5 O(n + r^2 log(n/r)): O(n + r^5 log(n/r)) (Theorem 17). Space O(r^2 + n). Pre: a
 // simple counter-clockwise polygon. Output: an optimal convex decomposition (OPT = r + 1 - the most
 // compatible patterns), Steiner points exact.
 #include "algorithms/chazelle_dobkin.h"

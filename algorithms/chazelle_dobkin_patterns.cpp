@@ -2,6 +2,7 @@
 // reconstruction of Theorem 14's segments and the deviation from Theorem 11.
 #include "algorithms/chazelle_dobkin_patterns.h"
 
+#include "algorithms/geodesics.h"
 #include "algorithms/visibility.h"
 
 #include <algorithm>
@@ -146,13 +147,6 @@ std::vector<QPoint> exact_vertices(const Polygon& p) {
   return exact;
 }
 
-// Whether n + r^3 log n, the views by ray shooting, is below n log n + n r, the triangulation's walks.
-bool rays_bound_is_smaller(std::size_t n, std::size_t r) {
-  const double log_n = std::log2(static_cast<double>(std::max<std::size_t>(n, 2)));
-  const double nd = static_cast<double>(n), rd = static_cast<double>(r);
-  return nd + rd * rd * rd * log_n < nd * log_n + nd * rd;
-}
-
 }  // namespace
 
 Patterns::Patterns(const Polygon& p, Views views) : p_(p), exact_(exact_vertices(p)), segments_(p, exact_) {
@@ -164,10 +158,36 @@ Patterns::Patterns(const Polygon& p, Views views) : p_(p), exact_(exact_vertices
   tip_known_.assign(r * r, 0);
   tip_.assign(r * r, std::nullopt);
   compute_bare_cones();
-  if (views == Views::kCheaperBound)
-    views = rays_bound_is_smaller(p.size(), r) ? Views::kRayShooting : Views::kTriangulation;
   if (views == Views::kTriangulation) views_from_triangulation();
-  else if (r > 0) views_by_ray_shooting();
+  else if (r > 0) views_from_geodesics();
+}
+
+// From each notch, the tree of its geodesics to every other (geodesics.h): a notch it sees is a
+// diagonal's end when the geodesic runs straight through P's interior, and its view passes across any
+// other notch w along the ray to the first turn of w's geodesic. A hidden w lies in a pocket behind one
+// window of the notch's view, a segment on a ray from the notch through the window's reflex vertex;
+// every path to w crosses that window, so its geodesic runs straight from the notch along the ray to
+// the window and turns first at the window's vertex (or at one beyond it on the ray, when it passes
+// straight through that vertex): the direction is the walks'. An adjacent notch, or one whose segment
+// touches the boundary, is seen along that segment. O(n + r^2 log n) for the chords, O(r log r) per
+// tree: O(n + r^2 log n) in all, as Theorem 11 and Lemma 5 give.
+void Patterns::views_from_geodesics() {
+  const std::size_t r = notches_.size();
+  std::vector<GeodesicTrees::Terminal> terminals;
+  for (VertexId v : notches_) terminals.push_back({v, true, at(v)});
+  GeodesicTrees trees(p_, terminals);
+  for (std::size_t from = 0; from < r; ++from)
+    for (std::size_t k = 0; k < r; ++k) {
+      if (k == from) continue;
+      const GeodesicTrees::Start start = trees.start(from, k);
+      if (!start.toward.at_vertex) throw std::logic_error("chazelle-dobkin: a geodesic turns inside an edge");
+      const VertexId w = notches_[k];
+      const bool adjacent = w == next(notches_[from]) || w == prev(notches_[from]);
+      transition_[from * r + k] = static_cast<VertexId>(start.toward.edge);
+      sees_notch_[from * r + k] = start.clear && !adjacent;
+    }
+  view_chords_ = trees.chords();
+  view_tangent_steps_ = trees.tangent_steps();
 }
 
 void Patterns::views_from_triangulation() {
@@ -209,131 +229,6 @@ void Patterns::compute_transitions(std::size_t from, const std::vector<std::uint
     transition_[from * r + k] = through;
     const bool adjacent = offset(w) == 1 || offset(w) == n - 1;
     sees_notch_[from * r + k] = x == w && !adjacent;
-  }
-}
-
-namespace {
-
-// Where the direction from `from` to `to` goes on at vertex u of p: strictly into P's interior, along
-// u's forward edge (to u + 1) or its backward edge, or out of P.
-enum class Heading : std::uint8_t { kInto, kAlongForward, kAlongBackward, kOut };
-
-Heading heading_at(const Polygon& p, std::size_t u, const Point& from, const Point& to) {
-  const Point &o = p[u], &after = p[p.next(u)], &before = p[p.prev(u)];
-  const int f_d = cross_sign(o, after, from, to), d_b = cross_sign(from, to, o, before);
-  if (f_d == 0 && dot_sign(o, after, from, to) > 0) return Heading::kAlongForward;
-  if (d_b == 0 && dot_sign(o, before, from, to) > 0) return Heading::kAlongBackward;
-  const bool into = p.is_reflex(u) ? !(d_b <= 0 && f_d <= 0) : f_d > 0 && d_b > 0;
-  return into ? Heading::kInto : Heading::kOut;
-}
-
-constexpr VertexId kNoWindow = static_cast<VertexId>(-1);
-
-}  // namespace
-
-// For each vertex u, the far end of the straight run of edges from u forwards (through 180-degree
-// vertices), and backwards: O(n), so that a ray running along the boundary skips a run in O(1).
-Patterns::StraightRuns::StraightRuns(const Polygon& p) : forward(p.size()), backward(p.size()) {
-  const std::size_t n = p.size();
-  auto straight = [&](std::size_t w) {
-    return orient(p[p.prev(w)], p[w], p[p.next(w)]) == 0 && dot_sign(p[p.prev(w)], p[w], p[w], p[p.next(w)]) > 0;
-  };
-  std::size_t bend = 0;  // a vertex that is not straight (a polygon has three)
-  while (straight(bend)) ++bend;
-  // Each run ends at a bend, so each entry reads one computed before it: from the bend outwards.
-  for (std::size_t k = 1; k <= n; ++k) {
-    const std::size_t u = (bend + n - k) % n, w = p.next(u);
-    forward[u] = static_cast<VertexId>(straight(w) ? forward[w] : w);
-  }
-  for (std::size_t k = 1; k <= n; ++k) {
-    const std::size_t u = (bend + k) % n, w = p.prev(u);
-    backward[u] = static_cast<VertexId>(straight(w) ? backward[w] : w);
-  }
-}
-
-void Patterns::views_by_ray_shooting() {
-  views_by_rays_ = true;
-  RayShooter shooter(p_);
-  const StraightRuns runs(p_);
-  for (std::size_t i = 0; i < notches_.size(); ++i) compute_transitions(i, shooter, runs);
-  view_probes_ = shooter.probes();
-}
-
-// The views from notch `from` by ray shooting. As a ray from the notch turns counter-clockwise, the
-// boundary point it meets first moves forward along the boundary, jumping where the ray touches a
-// vertex and goes on into P: the boundary between that vertex and the ray's next contact (on the side
-// away from the notch) is a pocket hidden behind the window between them, and the notch's view passes
-// across every position in it along that ray (the walk's x or y, compute_transitions above). A ray
-// goes on into P only past a reflex vertex, or along the boundary where vertices lie on it, so such a
-// ray runs through a notch the notch sees or along one of the notch's edges: following those rays
-// past every vertex they touch into P finds every window, and the vertices met beyond a first contact
-// are hidden too. A notch w is then seen, an edge's end, on a ray past its first contact, or inside a
-// pocket. The notches seen are found by two segment searches each (O(r log(n/r)),
-// boundary_chains.h); each ray followed is shot again past every notch it touches, once per notch
-// met, O(r log n) a shot (ray_shooting.h): O(r^2 log n) per notch, and the O(r) pockets are searched
-// in O(r) per notch w.
-void Patterns::compute_transitions(std::size_t from, RayShooter& shooter, const StraightRuns& runs) {
-  const std::size_t n = p_.size(), r = notches_.size();
-  const VertexId v = notches_[from];
-  // Boundary positions counted from the notch: 2 per vertex, odd inside an edge.
-  auto position = [&](std::size_t u, bool inside_edge) { return 2 * ((u + n - v) % n) + (inside_edge ? 1 : 0); };
-  auto notch_at = [&](std::size_t u) -> std::optional<std::size_t> {
-    const auto it = std::lower_bound(notches_.begin(), notches_.end(), u);
-    if (it == notches_.end() || *it != u) return std::nullopt;
-    return static_cast<std::size_t>(it - notches_.begin());
-  };
-  struct Pocket {
-    std::size_t lo, hi;  // open range of positions
-    VertexId through;
-  };
-  std::vector<Pocket> pockets;
-  std::vector<VertexId> on_ray(r, kNoWindow);  // notches met on a ray beyond its first contact
-  std::vector<char> seen(r, 0);
-  auto met = [&](std::size_t u, VertexId through) {
-    if (const auto k = notch_at(u)) on_ray[*k] = through;
-  };
-  // The ray from the notch through `through`, from its first contact u on, followed to its end.
-  auto follow = [&](VertexId through, std::size_t u) {
-    for (;;) {
-      Heading on = heading_at(p_, u, p_[v], p_[through]);
-      if (on == Heading::kAlongForward || on == Heading::kAlongBackward) {
-        // Along the boundary to the run's end (the vertices between are straight, so not notches).
-        u = on == Heading::kAlongForward ? runs.forward[u] : runs.backward[u];
-        met(u, through);
-        on = heading_at(p_, u, p_[v], p_[through]);
-      }
-      if (on != Heading::kInto) return;
-      ++view_shots_;
-      const auto hit = shooter.shoot(u, v, false);
-      if (!hit) throw std::logic_error("chazelle-dobkin: a ray into P meets no boundary");
-      const std::size_t a = position(u, false), b = position(hit->vertex, !hit->at_vertex);
-      pockets.push_back({std::min(a, b), std::max(a, b), through});
-      if (!hit->at_vertex) return;
-      u = hit->vertex;
-      met(u, through);
-    }
-  };
-  for (std::size_t k = 0; k < r; ++k) {
-    const VertexId c = notches_[k];
-    if (k == from) continue;
-    // sees() takes the notch's open cone: a notch along one of its edges is left to the follows below.
-    const QPoint mid((at(v).x() + at(c).x()) / 2, (at(v).y() + at(c).y()) / 2);
-    if (!sees(v, mid) || !sees(c, mid)) continue;
-    seen[k] = 1;
-    follow(c, c);
-  }
-  follow(next(v), next(v));
-  follow(prev(v), prev(v));
-  for (std::size_t k = 0; k < r; ++k) {
-    if (k == from) continue;
-    const VertexId w = notches_[k];
-    const bool adjacent = w == next(v) || w == prev(v);
-    VertexId through = adjacent || seen[k] ? w : on_ray[k];
-    for (std::size_t q = 0; q < pockets.size() && through == kNoWindow; ++q)
-      if (pockets[q].lo < position(w, false) && position(w, false) < pockets[q].hi) through = pockets[q].through;
-    if (through == kNoWindow) throw std::logic_error("chazelle-dobkin: no window hides a notch");
-    transition_[from * r + k] = through;
-    sees_notch_[from * r + k] = seen[k] && !adjacent;
   }
 }
 
@@ -513,10 +408,8 @@ void Patterns::report(Counters& counters) const {
   counters["tips"] += tips_;
   counters["tips_found"] += tips_found_;
   counters["segment_search_steps"] += segments_.steps();
-  if (views_by_rays_) {
-    counters["view_shots"] += view_shots_;
-    counters["view_probes"] += view_probes_;
-  }
+  counters["view_chords"] += view_chords_;
+  counters["view_tangent_steps"] += view_tangent_steps_;
 }
 
 }  // namespace pd::cd

@@ -67,23 +67,19 @@
 //     in the cone between the extensions of A's two notch edges beyond A, and likewise at B); edges
 //     that would pass through a vertex of P are refused, as the thesis assumes no reduction meets a
 //     notch (the pattern then reduces to a Y-pattern, found as such).
-// Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains) are replaced by one of
-// two sources of the same views across the notches (Views; a test holds them to each other on every
-// pair of notches, degenerate lattice polygons included):
-//   - ray shooting: from each notch, the rays through the notches it sees (two segment searches each)
-//     and along its two edges, each followed past the vertices it touches into P; the boundary between
-//     a ray's consecutive contacts is a pocket the notch's view passes across along that ray
-//     (compute_transitions). O(r) shots per notch, each O(r log n) on the boundary's convex arcs
-//     (algorithms/ray_shooting.h), straight runs of the boundary skipped in O(1): O(n + r^3 log n) in
-//     all where Theorem 11 gives O(n + r^2 log n);
-//   - walks of a triangulation: the visibility of every vertex from each notch
-//     (algorithms/visibility.h, O(n) per notch after an O(n log n) triangulation), the transitions
-//     read from it by binary search: O(n log n + n r + r^2 log n);
-//   - in both programs, the first when n + r^3 log n is below n log n + n r (their constants taken
-//     equal; the walks' r^2 log n, below the rays' r^3 log n, is left out), else the second:
-//     O(min(n + r^3 log n, n log n + n r + r^2 log n)), within Theorem 17's O(n + r^5 log(n/r)). Rays
-//     pay where r is small against n (random n = 20000, r = 16: 0.018 s against 0.028 s for all of
-//     chazelle-dobkin-n5), walks where it is not (comb n = 500, r = 248: 1.2 s against 11.8 s).
+// Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains; Lemma 5 reads R(v, D)
+// off them) are replaced by trees of geodesics from each notch (algorithms/geodesics.h), which give the
+// same views across the notches in the same O(n + r^2 log n) in all: P is cut into at most 2r + 1
+// convex faces by vertical chords from the notches (O(n + r^2 log n) by ray shooting on the boundary's
+// convex arcs, algorithms/ray_shooting.h), and a funnel walk over those faces from each notch (O(r log r))
+// gives, for every other notch w, the first turn of the geodesic to w: the view passes across w's
+// boundary position along the ray to that turn (or to w, seen), and w is a diagonal's end when the
+// geodesic runs straight through P's interior (views_from_geodesics). The thesis's own algorithm for
+// Theorem 11, a stack-based sweep over the convex chains, is not implemented. The tests hold these
+// views to walks of a triangulation (Views::kTriangulation: the visibility of every vertex from each
+// notch, algorithms/visibility.h, O(n) per notch after an O(n log n) triangulation, the transitions
+// read from it by binary search), which share no code with them, on every pair of notches of the
+// families and of degenerate lattice polygons.
 // Every test after it costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the
 // boundary in X4's tips and tests).
 //
@@ -91,7 +87,6 @@
 #pragma once
 
 #include "algorithms/boundary_chains.h"
-#include "algorithms/ray_shooting.h"
 #include "core/registry.h"
 
 #include <CGAL/Interval_nt.h>
@@ -129,16 +124,15 @@ struct Joint {
   IntervalKernel::Point_2 lower_approx, upper_approx;
 };
 
-// Where the views across the notches (transition) come from: ray shooting on the boundary's convex
-// arcs, O(n + r^3 log n) in all; walks of a triangulation, O(n log n + n r + r^2 log n); or whichever
-// of the two bounds is smaller for the polygon at hand (both programs; see the header comment). Both
-// give the same directions (a test holds them to each other).
-enum class Views : std::uint8_t { kRayShooting, kTriangulation, kCheaperBound };
+// Where the views across the notches (transition) come from: trees of geodesics, O(n + r^2 log n) in
+// all (both programs); or walks of a triangulation, O(n log n + n r + r^2 log n), which share no code
+// with them and which the tests hold them to (see the header comment).
+enum class Views : std::uint8_t { kGeodesics, kTriangulation };
 
 class Patterns {
  public:
   // Notches, the boundary's convex chains (O(n)) and the views from each notch across every other.
-  explicit Patterns(const Polygon& p, Views views = Views::kCheaperBound);
+  explicit Patterns(const Polygon& p, Views views = Views::kGeodesics);
   // The chain search refers to this object's rational vertices.
   Patterns(const Patterns&) = delete;
   Patterns& operator=(const Patterns&) = delete;
@@ -203,8 +197,9 @@ class Patterns {
 
   // Counts "x2_tests", "x2_found", "x3_tests", "x3_found", "x4_tests", "x4_found", "tips" (computed),
   // "tips_found" (that exist), "segment_search_steps" (boxes of the chains' hierarchy visited,
-  // binary-search steps and vertices tested by sees and inside); when the views come from ray shooting
-  // also "view_shots" (rays shot for them) and "view_probes" (the shooter's tests on its arcs).
+  // binary-search steps and vertices tested by sees and inside), and for the views from geodesics
+  // "view_chords" (the chords of their decomposition) and "view_tangent_steps" (orientations of the
+  // walks' funnel searches).
   void report(Counters& counters) const;
 
  private:
@@ -214,12 +209,7 @@ class Patterns {
   void compute_transitions(std::size_t from, const std::vector<std::uint32_t>& visible,
                            const std::vector<std::uint32_t>& seen);
   void views_from_triangulation();
-  void views_by_ray_shooting();
-  struct StraightRuns {
-    explicit StraightRuns(const Polygon& p);
-    std::vector<VertexId> forward, backward;
-  };
-  void compute_transitions(std::size_t from, RayShooter& shooter, const StraightRuns& runs);
+  void views_from_geodesics();
   void compute_bare_cones();
   Joint cone(const AdaptedNotch& a) const;
   std::vector<QPoint> x3_region(const std::array<const Joint*, 3>& joints) const;
@@ -229,7 +219,6 @@ class Patterns {
   const Polygon& p_;
   std::vector<QPoint> exact_;
   mutable boundary::SegmentSearch segments_;  // P's boundary in convex chains, for sees and inside
-  bool views_by_rays_ = false;
   std::vector<VertexId> notches_;
   // Per notch: the bare notch, its joint and its two branches.
   std::vector<AdaptedNotch> bare_;
@@ -242,7 +231,7 @@ class Patterns {
   std::vector<char> tip_known_;
   std::vector<std::optional<QPoint>> tip_;
   std::int64_t x2_tests_ = 0, x2_found_ = 0, x3_tests_ = 0, x3_found_ = 0;
-  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0, tips_found_ = 0, view_shots_ = 0, view_probes_ = 0;
+  std::int64_t x4_tests_ = 0, x4_found_ = 0, tips_ = 0, tips_found_ = 0, view_chords_ = 0, view_tangent_steps_ = 0;
 };
 
 }  // namespace pd::cd

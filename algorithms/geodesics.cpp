@@ -34,7 +34,7 @@ GeodesicTrees::GeodesicTrees(const Polygon& p, const std::vector<Terminal>& term
   add_chords(p);
   sort_sites();
   build_faces();
-  turn_by_root_.resize(sites_.size());
+  trees_by_root_.resize(sites_.size());
   funnel_.assign(2 * faces_.size() + 8, 0);
   funnel_points_.assign(funnel_.size(), nullptr);
 }
@@ -148,8 +148,7 @@ void GeodesicTrees::path(std::size_t from, std::size_t to, std::vector<const Fil
   const std::uint32_t source = site_of_terminal_[from], root = site_of_terminal_[to];
   out.push_back(&sites_[source].point);
   if (source == root) return;
-  if (turn_by_root_[root].empty()) build(root);
-  const std::vector<std::uint32_t>& turn = turn_by_root_[root];
+  const std::vector<std::uint32_t>& turn = tree(root).turn;
   for (std::uint32_t id = turn[source]; id != root; id = turn[id]) {
     if (id == kUnset) throw std::logic_error("geodesics: a site not reached by the walk");
     out.push_back(&sites_[id].point);
@@ -157,18 +156,30 @@ void GeodesicTrees::path(std::size_t from, std::size_t to, std::vector<const Fil
   out.push_back(&sites_[root].point);
 }
 
+GeodesicTrees::Start GeodesicTrees::start(std::size_t from, std::size_t to) {
+  const std::uint32_t root = site_of_terminal_[from], target = site_of_terminal_[to];
+  const Tree& t = tree(root);
+  const Site& toward = sites_[t.first[target]];
+  return {{toward.edge, toward.at_vertex, toward.point.exact}, t.turn[target] == root && t.clear[target] != 0};
+}
+
+const GeodesicTrees::Tree& GeodesicTrees::tree(std::uint32_t root) {
+  Tree& t = trees_by_root_[root];
+  if (t.turn.empty()) build(root, t);
+  return t;
+}
+
 // From the root every site of each face at it is seen directly; the walk enters every other face
 // through a chord of those, with the funnel (left end, root, right end).
-void GeodesicTrees::build(std::size_t root) {
+void GeodesicTrees::build(std::uint32_t root, Tree& tree) {
   ++trees_;
-  root_ = static_cast<std::uint32_t>(root);
-  std::vector<std::uint32_t>& turn = turn_by_root_[root];
-  turn.assign(sites_.size(), kUnset);
+  root_ = root;
+  tree.turn.assign(sites_.size(), kUnset);
+  tree.first.assign(sites_.size(), kUnset);
+  tree.clear.assign(sites_.size(), 1);
+  for (std::uint32_t f : faces_at_site_[root]) mark_seen_directly(f, tree);
   const std::uint32_t mid = static_cast<std::uint32_t>(faces_.size() + 3);
   set_funnel_entry(mid, root_);
-  for (std::uint32_t f : faces_at_site_[root])
-    for (const Step& step : faces_[f])
-      if (step.from != root_) turn[step.from] = root_;
   for (std::uint32_t f : faces_at_site_[root]) {
     for (const Step& step : faces_[f]) {
       if (step.chord < 0 || step.from == root_ || step.to == root_) continue;
@@ -176,7 +187,54 @@ void GeodesicTrees::build(std::size_t root) {
       const std::size_t beyond = sides.faces[0] == f ? 1 : 0;
       set_funnel_entry(mid - 1, step.to);
       set_funnel_entry(mid + 1, step.from);
-      enter({sides.faces[beyond], sides.steps[beyond], mid - 1, mid + 1, mid, false, false, false}, turn);
+      enter({sides.faces[beyond], sides.steps[beyond], mid - 1, mid + 1, mid, false, false, false}, tree);
+    }
+  }
+}
+
+// Whether the boundary of P from site a forwards to site b (the next site) runs straight: it holds no
+// vertex strictly between them, or its first such vertex lies on the segment ab (the face on its left
+// is convex, so the rest do too).
+bool GeodesicTrees::straight_arc(std::uint32_t a, std::uint32_t b) const {
+  const Site &from = sites_[a], &to = sites_[b];
+  const std::size_t w = p_.next(from.edge);
+  const bool vertex_between = !(to.edge == from.edge && !to.at_vertex) && !(to.at_vertex && to.edge == w);
+  if (!vertex_between) return true;
+  const FilteredPoint first(to_exact(p_[w]));
+  return orient(from.point, first, to.point) == 0 &&
+         CGAL::collinear_are_strictly_ordered_along_line(from.point.exact, first.exact, to.point.exact);
+}
+
+// The root sees every site of a face at it in a straight line. The face is convex, so the segment
+// from the root to a site touches the face's boundary between them only when the two lie on one of its
+// sides, which starts at the root one way round or the other: where the boundary from the root to its
+// neighbour that way runs straight, the sites after the neighbour on that line lie beyond a point of
+// P's boundary, and the neighbour itself too when the side runs along P's boundary, not a chord.
+void GeodesicTrees::mark_seen_directly(std::uint32_t face, Tree& tree) const {
+  const std::vector<Step>& steps = faces_[face];
+  const std::size_t size = steps.size();
+  std::size_t at = 0;
+  while (steps[at].from != root_) ++at;
+  for (std::size_t k = 1; k < size; ++k) {
+    const std::uint32_t site = steps[(at + k) % size].from;
+    tree.turn[site] = root_;
+    tree.first[site] = site;
+  }
+  for (const bool forward : {true, false}) {
+    const Step& side = steps[forward ? at : (at + size - 1) % size];
+    const std::uint32_t neighbour = forward ? side.to : side.from;
+    if (side.chord < 0) {
+      if (!straight_arc(side.from, side.to)) continue;  // the root and the neighbour are not on a side
+      tree.clear[neighbour] = 0;
+    }
+    std::uint32_t last = neighbour;
+    for (std::size_t k = 1; k + 1 < size; ++k) {
+      const Step& next = steps[forward ? (at + k) % size : (at + 2 * size - 1 - k) % size];
+      const std::uint32_t beyond = forward ? next.to : next.from;
+      const FilteredPoint &o = sites_[root_].point, &l = sites_[last].point, &b = sites_[beyond].point;
+      if (orient(o, l, b) != 0 || !CGAL::collinear_are_strictly_ordered_along_line(o.exact, l.exact, b.exact)) break;
+      tree.clear[beyond] = 0;
+      last = beyond;
     }
   }
 }
@@ -184,7 +242,7 @@ void GeodesicTrees::build(std::size_t root) {
 // Depth first over the dual tree from window `first`. Within a face entered through its step p (from
 // the window's left end x to its right end y, counter-clockwise), the other sites follow clockwise from
 // x to y: their funnel vertices run from lo to hi.
-void GeodesicTrees::enter(const Window& first, std::vector<std::uint32_t>& turn) {
+void GeodesicTrees::enter(const Window& first, Tree& tree) {
   stack_.assign(1, first);
   while (!stack_.empty()) {
     const Window w = stack_.back();
@@ -210,7 +268,7 @@ void GeodesicTrees::enter(const Window& first, std::vector<std::uint32_t>& turn)
       if (site != y) {
         reached = static_cast<std::uint32_t>(
             funnel_tangent(funnel_points_, w.lo, w.hi, w.apex, sites_[site].point, previous, tangent_steps_));
-        if (turn[site] == kUnset) turn[site] = last_turn(funnel_[reached], site, turn);
+        if (tree.turn[site] == kUnset) reach(site, funnel_[reached], tree);
       }
       if (reached < previous) throw std::logic_error("geodesics: funnel vertices out of order around a face");
       if (step.chord >= 0) {
@@ -226,12 +284,15 @@ void GeodesicTrees::enter(const Window& first, std::vector<std::uint32_t>& turn)
   }
 }
 
-// The geodesic reaches site c straight from funnel vertex u: it turns at u unless u is the root or its
-// last turn g, u and c lie on one line (the geodesic then runs straight from g through u to c).
-std::uint32_t GeodesicTrees::last_turn(std::uint32_t u, std::uint32_t c, const std::vector<std::uint32_t>& turn) const {
-  if (u == root_) return u;
-  const std::uint32_t g = turn[u];
-  return orient(sites_[g].point, sites_[u].point, sites_[c].point) == 0 ? g : u;
+// The geodesic reaches `site` straight from funnel vertex u: it turns at u unless u is the root or its
+// last turn g, u and the site lie on one line (the geodesic then runs straight from g through u, a
+// point of the boundary, to the site).
+void GeodesicTrees::reach(std::uint32_t site, std::uint32_t u, Tree& tree) const {
+  std::uint32_t turn = u;
+  if (u != root_ && orient(sites_[tree.turn[u]].point, sites_[u].point, sites_[site].point) == 0) turn = tree.turn[u];
+  tree.turn[site] = turn;
+  tree.first[site] = turn == root_ ? site : tree.first[turn];
+  tree.clear[site] = turn == root_ && u == root_;
 }
 
 void GeodesicTrees::set_funnel_entry(std::size_t at, std::uint32_t site) {

@@ -1,5 +1,7 @@
 // Geodesics (shortest paths inside a simple polygon) between points of its boundary, for chazelle-dobkin's
-// test of "XY lies in P" between two loose rays (algorithms/chazelle_dobkin_cubic.cpp, (7)).
+// test of "XY lies in P" between two loose rays (algorithms/chazelle_dobkin_cubic.cpp, (7)), and for
+// both Chazelle-Dobkin programs' views across the notches (chazelle_dobkin_patterns.h): how each
+// geodesic leaves its root (its first turn) and whether a straight one touches the boundary.
 //
 // Method: the funnel walk of Lee and Preparata ("Euclidean shortest paths in the presence of
 // rectilinear barriers", Networks 14, 1984) and of Guibas, Hershberger, Leven, Sharir and Tarjan
@@ -31,7 +33,10 @@
 // Turns only: a geodesic that passes straight through a point (collinear with the points before and
 // after it) does not list it, so a path has O(r) points, the notches where it turns and its two ends.
 // Its first point after a start X in P lies on the ray along which it leaves X, at or beyond the first
-// point of the boundary that it meets.
+// point of the boundary that it meets. A straight geodesic touches the boundary between its ends
+// exactly where it passes a funnel vertex (a notch or a chord's end, met by the search as the nearer of
+// two on its line) or runs along a side of a face at its root that is not a chord: each tree records
+// that with each site's first turn.
 //
 // Exact: every decision is an orientation of three points, taken with CGAL's filtered predicate when
 // all three are in doubles, else on intervals and, when they do not settle it, on exact rationals (a
@@ -156,6 +161,16 @@ class GeodesicTrees {
   // point object.
   const FilteredPoint& point(std::size_t terminal) const { return sites_[site_of_terminal_[terminal]].point; }
 
+  // How the geodesic from terminal `from` to terminal `to` leaves `from`: towards `toward`, the first
+  // point where it turns, or `to` when it runs straight (vertex `toward.edge` when at_vertex); `clear`
+  // when it runs straight and its open segment lies in P's interior (touches no point of the boundary).
+  // Builds the tree rooted at `from` the first time, then O(1).
+  struct Start {
+    Terminal toward;
+    bool clear;
+  };
+  Start start(std::size_t from, std::size_t to);
+
   std::int64_t chords() const { return static_cast<std::int64_t>(chords_.size()); }
   std::int64_t trees() const { return trees_; }
   std::int64_t faces_entered() const { return faces_entered_; }
@@ -188,13 +203,24 @@ class GeodesicTrees {
     bool write_lo, write_hi, restore;
   };
 
+  // Per root (a site) and site: the last turn before the site on its geodesic from the root (a site,
+  // or the root), the first turn after the root (or the site itself when none), and whether it runs
+  // straight with its open segment inside P's interior.
+  struct Tree {
+    std::vector<std::uint32_t> turn, first;
+    std::vector<char> clear;
+  };
+
   void add_chords(const Polygon& p);
   void sort_sites();
   void build_faces();
   std::vector<Step> inner_face(std::uint32_t i, std::uint32_t j, std::int32_t chord);
-  void build(std::size_t root);
-  void enter(const Window& w, std::vector<std::uint32_t>& turn);
-  std::uint32_t last_turn(std::uint32_t u, std::uint32_t c, const std::vector<std::uint32_t>& turn) const;
+  const Tree& tree(std::uint32_t root);
+  void build(std::uint32_t root, Tree& tree);
+  bool straight_arc(std::uint32_t a, std::uint32_t b) const;
+  void mark_seen_directly(std::uint32_t face, Tree& tree) const;
+  void enter(const Window& w, Tree& tree);
+  void reach(std::uint32_t site, std::uint32_t from, Tree& tree) const;
   void set_funnel_entry(std::size_t at, std::uint32_t site);
 
   const Polygon& p_;
@@ -205,8 +231,7 @@ class GeodesicTrees {
   std::vector<ChordSides> sides_;
   std::vector<std::vector<Step>> faces_;  // face 0 holds the boundary from the last site to site 0
   std::vector<std::vector<std::uint32_t>> faces_at_site_;
-  // Per root (a site), the last turn before each site on its geodesic: a site, or the root's.
-  std::vector<std::vector<std::uint32_t>> turn_by_root_;
+  std::vector<Tree> trees_by_root_;  // by root site
   std::uint32_t root_ = 0;
   // The walk's funnel (sites), its entries as points for funnel_tangent, and its stack.
   std::vector<std::uint32_t> funnel_;

@@ -17,6 +17,11 @@ int sign_of(const Rational& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 // sum round once, relative error 2^-53 each: at most 5 * 2^-53 * (|p1| + |p2|), here 8 * 2^-52),
 // else by rationals. Tiny or huge magnitudes (underflow, overflow) always go to rationals.
 int sign_of_products(double ea, double eb, double fa, double fb, double ga, double gb, double ha, double hb, int sign2) {
+  // A difference of two doubles has the sign of the exact one: a product with a zero factor is exactly
+  // zero, and the sum has the other product's sign (axis-parallel rays and edges, lattice inputs).
+  const auto sign = [](double from, double to) { return (to > from) - (to < from); };
+  if (ea == eb || fa == fb) return sign2 * sign(ga, gb) * sign(ha, hb);
+  if (ga == gb || ha == hb) return sign(ea, eb) * sign(fa, fb);
   const double p1 = (eb - ea) * (fb - fa), p2 = (gb - ga) * (hb - ha);
   const double v = p1 + sign2 * p2, magnitude = std::fabs(p1) + std::fabs(p2);
   const double bound = 8 * std::numeric_limits<double>::epsilon() * magnitude;
@@ -45,7 +50,7 @@ struct RayShooter::Ray {
   const Point& a;
   const Point& b;
   int flag;
-  int side(const Point& v) const { return flag * cross_sign(a, b, o, v); }
+  int side(const Point& v) const { return flag * (&a == &o ? orient(o, b, v) : cross_sign(a, b, o, v)); }
   int edge_turn(const Point& e0, const Point& e1) const { return flag * cross_sign(a, b, e0, e1); }
   int ahead(const Point& v) const { return flag * dot_sign(o, v, a, b); }
 };

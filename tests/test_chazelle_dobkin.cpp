@@ -195,29 +195,30 @@ bool is_x3_steiner(const Polygon& p, const std::array<VertexId, 3>& v, const QPo
   return true;
 }
 
-// The two sources of the views (cd::Views), ray shooting on the boundary's arcs and walks of the
+// The two sources of the views (cd::Views), trees of geodesics over vertical chords and walks of the
 // triangulation, share no code: they agree on every ordered pair of notches (the same diagonals, and
 // views across along the same ray from the notch), on the families and on degenerate lattice polygons
-// where rays touch vertices, run along edges and pass 180-degree vertices.
-TEST(ChazelleDobkinPatterns, RayShootingAndTheTriangulationGiveTheSameViews) {
+// where segments between notches touch vertices, run along edges and along chords, and pass
+// 180-degree vertices.
+TEST(ChazelleDobkinPatterns, GeodesicsAndTheTriangulationGiveTheSameViews) {
   std::size_t pairs = 0, hidden = 0;
   auto compare = [&](const Polygon& p, const std::string& where) {
-    const cd::Patterns by_rays(p, cd::Views::kRayShooting), by_walks(p, cd::Views::kTriangulation);
-    const auto& notches = by_rays.notches();
+    const cd::Patterns by_trees(p, cd::Views::kGeodesics), by_walks(p, cd::Views::kTriangulation);
+    const auto& notches = by_trees.notches();
     for (std::size_t a = 0; a < notches.size(); ++a)
       for (std::size_t b = 0; b < notches.size(); ++b) {
         if (a == b) continue;
         ++pairs;
-        EXPECT_EQ(by_rays.diagonal(a, b), by_walks.diagonal(a, b)) << where << " notches " << a << ", " << b;
-        const Point &z = p[notches[a]], &x = p[by_rays.transition(a, b)], &y = p[by_walks.transition(a, b)];
+        EXPECT_EQ(by_trees.diagonal(a, b), by_walks.diagonal(a, b)) << where << " notches " << a << ", " << b;
+        const Point &z = p[notches[a]], &x = p[by_trees.transition(a, b)], &y = p[by_walks.transition(a, b)];
         hidden += by_walks.transition(a, b) != notches[b];
         EXPECT_TRUE(orient(z, x, y) == 0 && dot_sign(z, x, z, y) > 0)
-            << where << " notches " << a << ", " << b << ": views through " << by_rays.transition(a, b) << " and "
+            << where << " notches " << a << ", " << b << ": views through " << by_trees.transition(a, b) << " and "
             << by_walks.transition(a, b);
       }
   };
   for (const Family& f : families())
-    for (std::size_t n : {20, 60, 120})
+    for (std::size_t n : {20, 60, 120, 300})
       for (std::uint64_t seed : {1, 2, 3}) {
         const std::size_t r = f.default_reflex(n);
         if (!f.infeasible(n, r)) compare(Polygon::make(generate(f.name, n, r, seed)), label({f.name, n, r, seed}));
