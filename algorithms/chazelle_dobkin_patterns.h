@@ -189,8 +189,8 @@ class Patterns {
   bool inside(const QPoint& s, const QPoint& t) const;
 
   // A vertex on the ray from notch `from` along which its view passes across notch `towards`'s
-  // boundary position: `towards` itself when from sees it (a diagonal or an edge), else the window
-  // whose pocket hides it (see the header comment). Only the ray's direction is meant.
+  // boundary position: the first turn of the geodesic from `from` to `towards`, or `towards` itself
+  // when it runs straight (see the header comment). Only the ray's direction is meant.
   VertexId transition(std::size_t from, std::size_t towards) const {
     return transition_[from * notches_.size() + towards];
   }

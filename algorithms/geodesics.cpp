@@ -4,7 +4,9 @@
 #include "algorithms/ray_shooting.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
+#include <tuple>
 
 namespace pd {
 
@@ -12,10 +14,10 @@ namespace pd {
 // (towards the left end), i.e. c does not lie past the edge. On the left chain (before the apex) c lies
 // past an edge when it lies strictly left of it, on the right chain when strictly right of it. On the
 // edge's line, c is reached from the edge's vertex nearer to it: the outer one when c lies beyond it (a
-// terminal inside an edge, on the window itself, can also lie on the edge between the two). The
-// answers are false before the tangent vertex and true from it on.
+// point X on chazelle-dobkin's ray G, tables.h, can also lie on the edge between the two). The answers
+// are false before the tangent vertex and true from it on.
 std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size_t lo, std::size_t hi, std::size_t apex,
-                           const FilteredPoint& c, std::optional<std::size_t> guess, std::int64_t& steps) {
+                           const FilteredPoint& c, std::size_t guess, std::int64_t& steps) {
   const auto reached_from = [&](std::size_t i) {
     ++steps;
     const int side = orient(*F[i], *F[i + 1], c);
@@ -23,7 +25,7 @@ std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size
     const bool between = CGAL::collinear_are_strictly_ordered_along_line(F[i]->exact, c.exact, F[i + 1]->exact);
     return i < apex ? !between : between;
   };
-  return guess ? first_holding(lo, hi, *guess, reached_from) : first_holding_from_ends(lo, hi, reached_from);
+  return first_holding(lo, hi, guess, reached_from);
 }
 
 GeodesicTrees::GeodesicTrees(const Polygon& p, const std::vector<Terminal>& terminals) : p_(p) {
@@ -100,7 +102,8 @@ void GeodesicTrees::sort_sites() {
 
 // The chords join sites on a circle without crossing: face 0 runs along the whole boundary, jumping
 // over each outermost chord; the face inside chord (i, j) runs from i to j the same way and back along
-// the chord. Each step along the boundary and each side of a chord is in one face: O(s + chords).
+// the chord. Each step along the boundary and each side of a chord is in one face, each found by a
+// binary search among the chords: O((s + chords) log r).
 void GeodesicTrees::build_faces() {
   sides_.assign(chords_.size(), ChordSides{});
   faces_.push_back(inner_face(0, static_cast<std::uint32_t>(sites_.size()), -1));
@@ -158,7 +161,9 @@ void GeodesicTrees::path(std::size_t from, std::size_t to, std::vector<const Fil
 
 GeodesicTrees::Start GeodesicTrees::start(std::size_t from, std::size_t to) {
   const std::uint32_t root = site_of_terminal_[from], target = site_of_terminal_[to];
+  if (root == target) return {{sites_[root].edge, sites_[root].at_vertex, sites_[root].point.exact}, false};
   const Tree& t = tree(root);
+  if (t.first[target] == kUnset) throw std::logic_error("geodesics: a site not reached by the walk");
   const Site& toward = sites_[t.first[target]];
   return {{toward.edge, toward.at_vertex, toward.point.exact}, t.turn[target] == root && t.clear[target] != 0};
 }

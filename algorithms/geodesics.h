@@ -7,7 +7,8 @@
 // rectilinear barriers", Networks 14, 1984) and of Guibas, Hershberger, Leven, Sharir and Tarjan
 // ("Linear-time algorithms for visibility and shortest path problems inside triangulated simple
 // polygons", Algorithmica 2, 1987, Sec. 2), over a convex decomposition with O(r) faces in place of a
-// triangulation with n - 2, so that a tree costs O(r log r) instead of O(n).
+// triangulation with n - 2, so that a tree costs O(s log r) for the s sites below (O(r log r) for
+// chazelle-dobkin's O(r) terminals) instead of O(n).
 //
 // The decomposition: from every notch, a vertical segment up, and one down, wherever that direction
 // points into P, to the first point of the boundary it meets (ray_shooting.h, O(r log n) each). The
@@ -52,8 +53,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <optional>
-#include <tuple>
 #include <vector>
 
 namespace pd {
@@ -104,45 +103,14 @@ std::size_t first_holding(std::size_t lo, std::size_t hi, std::size_t guess, con
   return static_cast<std::size_t>(bisect(a, b, at));
 }
 
-// The same answer, galloping inwards from both ends in turn, then bisecting: O(1 + log(1 + min(k - lo,
-// hi - k))) calls. A walk that splits a list of m entries at the answer into two of sizes a + b = m + O(1)
-// (and so on in each part) then makes O(m + splits) calls in all, whatever the answers: with the
-// potential 2m - log2 m per list, a split's log2 min(a, b) is paid by the potential's drop plus O(1) (the
-// finger-search argument of Guibas, Hershberger, Leven, Sharir and Tarjan 1987, Sec. 2).
-template <class Holds>
-std::size_t first_holding_from_ends(std::size_t lo, std::size_t hi, const Holds& holds) {
-  const std::ptrdiff_t first = static_cast<std::ptrdiff_t>(lo) - 1, last = static_cast<std::ptrdiff_t>(hi);
-  std::ptrdiff_t a = first, b = last;  // holds fails at a (or a = lo - 1) and holds at b (or b = hi)
-  for (std::ptrdiff_t step = 1; b - a > 1; step *= 2) {
-    const std::ptrdiff_t from_left = first + step, from_right = last - step;
-    if (from_left >= b && from_right <= a) break;  // both gallops have passed the bracket
-    if (from_left < b) {
-      if (holds(static_cast<std::size_t>(from_left))) {
-        b = from_left;
-        break;
-      }
-      a = from_left;
-    }
-    if (from_right > a && from_right < b) {
-      if (!holds(static_cast<std::size_t>(from_right))) {
-        a = from_right;
-        break;
-      }
-      b = from_right;
-    }
-  }
-  return static_cast<std::size_t>(bisect(a, b, [&](std::ptrdiff_t k) { return holds(static_cast<std::size_t>(k)); }));
-}
-
 // A funnel: points F[lo..hi], from the left end of a window (F[lo]) through the apex F[apex] to its right
 // end (F[hi]), left and right as seen from the apex (the left end counter-clockwise from the right end);
 // the chains from the apex to the ends are the shortest paths to them. For a point c beyond the window or
 // on it, the index of the funnel vertex from which the shortest path reaches c in a straight line: the
 // last vertex of the path from the apex's root to c before c (of two on one line with c, the nearer).
-// Searched from `guess` (first_holding), or from both ends at once without one (first_holding_from_ends);
-// adds the orientations taken to `steps`.
+// Searched from `guess` (first_holding); adds the orientations taken to `steps`.
 std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size_t lo, std::size_t hi, std::size_t apex,
-                           const FilteredPoint& c, std::optional<std::size_t> guess, std::int64_t& steps);
+                           const FilteredPoint& c, std::size_t guess, std::int64_t& steps);
 
 class GeodesicTrees {
  public:

@@ -1,6 +1,5 @@
-// Ray shooting from polygon vertices, for keil-snoeyink-reduced, Chazelle-Dobkin's loose rays and its
-// views across the notches (chazelle_dobkin_tables.h, chazelle_dobkin_patterns.cpp), and the vertical
-// chords that its geodesics walk (geodesics.h).
+// Ray shooting from polygon vertices, for keil-snoeyink-reduced, Chazelle-Dobkin's loose rays
+// (chazelle_dobkin_tables.h) and the vertical chords that its geodesics walk (geodesics.h).
 //
 // Keil & Snoeyink (001, Sec. 4) shoot O(r^2) rays in O(log n) each after linear preprocessing
 // (geodesic triangulations, Chazelle et al.; or Hershberger-Suri). This is a simpler structure with a
@@ -41,7 +40,8 @@ class RayShooter {
   // Pre: origin != through. Returns nothing when the ray meets no boundary point beyond the origin
   // (it cannot when it starts into p's interior).
   std::optional<Hit> shoot(std::size_t origin, std::size_t through, bool toward);
-  // The ray from p[origin] in direction b - a (a != b). The same precondition and answer.
+  // The ray from p[origin] in direction b - a (a != b); the same answer. Pre: the ray starts into p's
+  // interior, or the answer may be nothing.
   std::optional<Hit> shoot_along(std::size_t origin, const Point& a, const Point& b);
 
   std::size_t arcs() const { return arc_start_.size(); }

@@ -37,14 +37,6 @@ class VisibilityGraph {
   void visible_from(std::size_t v, std::vector<std::uint32_t>& out, std::int64_t& triangles,
                     std::vector<std::uint32_t>* seen = nullptr) const;
 
-  // The triangulation as half-edges, for other walks over it (geodesics.h). Slots [row_begin(v),
-  // row_end(v)) are the half-edges from v, to head(h), in counter-clockwise order around v from v + 1 to
-  // v - 1; twin(h) is the slot of the reverse half-edge.
-  std::uint32_t row_begin(std::size_t v) const { return start_[v]; }
-  std::uint32_t row_end(std::size_t v) const { return start_[v + 1]; }
-  std::uint32_t head(std::uint32_t h) const { return target_[h]; }
-  std::uint32_t twin(std::uint32_t h) const { return twin_[h]; }
-
  private:
   std::size_t offset(std::size_t from, std::size_t to) const { return (to + n_ - from) % n_; }
   void sort_rows();

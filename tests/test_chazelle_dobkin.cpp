@@ -495,6 +495,19 @@ struct GeodesicCheck {
 
   // Whether the closed segment ab lies in the closed polygon: no edge crosses it inside both, and
   // between the vertices on it each piece lies inside or along the boundary (its midpoint does).
+  // Whether the open segment ab, in the closed polygon, touches its boundary: a vertex lies strictly
+  // inside it, or (with none there) an edge holds it whole, and so its midpoint.
+  bool touches_boundary(const QPoint& a, const QPoint& b) const {
+    const QPoint mid = a + (b - a) / Rational(2);
+    const std::size_t n = corners.size();
+    for (std::size_t e = 0; e < n; ++e) {
+      const QPoint &u = corners[e], &w = corners[(e + 1) % n];
+      if (orient(a, b, u) == 0 && CGAL::collinear_are_strictly_ordered_along_line(a, u, b)) return true;
+      if (orient(u, w, mid) == 0 && CGAL::collinear_are_ordered_along_line(u, mid, w)) return true;
+    }
+    return false;
+  }
+
   bool in_closed_polygon(const QPoint& a, const QPoint& b) const {
     std::vector<Rational> cuts{Rational(0), Rational(1)};
     const std::size_t n = corners.size();
@@ -545,34 +558,32 @@ struct GeodesicCheck {
   std::vector<double> distance;
 };
 
-// The tree walk's search (first_holding_from_ends) finds the first index where a monotone predicate
-// holds, like first_holding from any guess, with at most 3 bit_width(d + 1) + 2 calls for d the answer's
-// distance to the nearer end: what makes a tree O(n) (geodesics.h). Every answer in every range up to
-// 40 entries, and answers near either end of ranges of 2^16 and 2^20 entries, where a bisection or a
-// gallop from the middle would take 16 to 40 calls.
-TEST(Geodesics, SearchFromBothEndsCostsTheLogOfTheNearerEnd) {
-  const auto check = [](std::size_t lo, std::size_t hi, std::size_t k, bool from_every_guess) {
+// The funnel searches' first_holding finds the first index where a monotone predicate holds, from any
+// guess, with at most 2 bit_width(d + 1) + 4 calls for d the answer's distance to the guess: what keeps
+// a face's searches O(log r) each (geodesics.h). Every answer from every guess in every range up to 40
+// entries, and answers near the guess in ranges of 2^16 and 2^20 entries.
+TEST(Geodesics, SearchFromAGuessCostsTheLogOfTheDistance) {
+  const auto check = [](std::size_t lo, std::size_t hi, std::size_t k, std::size_t guess) {
     std::int64_t calls = 0;
     const auto holds = [&](std::size_t i) {
       EXPECT_TRUE(lo <= i && i < hi) << i;
       ++calls;
       return i >= k;
     };
-    EXPECT_EQ(first_holding_from_ends(lo, hi, holds), k) << lo << " " << hi;
-    const std::size_t d = std::min(k - lo, hi - k);
+    EXPECT_EQ(first_holding(lo, hi, guess, holds), k) << lo << " " << hi << " " << guess;
+    const std::size_t d = k > guess ? k - guess : guess - k;
     std::int64_t width = 0;
     while ((std::size_t{1} << width) <= d + 1) ++width;
-    EXPECT_LE(calls, 3 * width + 2) << lo << " " << hi << " " << k;
-    if (!from_every_guess) return;
-    for (std::size_t guess = lo; guess <= hi; ++guess) EXPECT_EQ(first_holding(lo, hi, guess, holds), k);
+    EXPECT_LE(calls, 2 * width + 4) << lo << " " << hi << " " << k << " " << guess;
   };
   for (std::size_t lo = 0; lo < 3; ++lo)
     for (std::size_t hi = lo; hi <= lo + 40; ++hi)
-      for (std::size_t k = lo; k <= hi; ++k) check(lo, hi, k, true);
+      for (std::size_t k = lo; k <= hi; ++k)
+        for (std::size_t guess = lo; guess <= hi; ++guess) check(lo, hi, k, guess);
   for (std::size_t size : {std::size_t{1} << 16, std::size_t{1} << 20})
     for (std::size_t d = 0; d <= 8; ++d) {
-      check(5, 5 + size, 5 + d, false);
-      check(5, 5 + size, 5 + size - d, false);
+      check(5, 5 + size, 5 + size / 2 + d, 5 + size / 2);
+      check(5, 5 + size, 5 + size / 2 - d, 5 + size / 2);
     }
 }
 
@@ -597,7 +608,7 @@ TEST(Geodesics, ShortestPathsOfTheBruteForce) {
     polygons.emplace_back(lattice::lattice_polygon(8 + round % 9, 5 + round % 3, rng), "lattice polygon " + std::to_string(round));
   for (int round = 0; round < 60; ++round)
     if (const std::optional<Polygon> p = lattice::notched_rectangle(rng)) polygons.emplace_back(*p, "notched rectangle " + std::to_string(round));
-  std::int64_t checked = 0, bent = 0;
+  std::int64_t checked = 0, bent = 0, touching = 0;
   for (std::size_t k = 0; k < polygons.size(); ++k) {
     const auto& [p, where] = polygons[k];
     const GeodesicCheck brute(p, k >= crossings_from);
@@ -615,6 +626,7 @@ TEST(Geodesics, ShortestPathsOfTheBruteForce) {
       std::vector<GeodesicTrees::Terminal> terminals;
       for (std::size_t t : *chosen) terminals.push_back(brute.terminals[t]);
       GeodesicTrees trees(p, terminals);
+      EXPECT_LE(trees.chords(), static_cast<std::int64_t>(2 * p.reflex_count())) << where;
       std::vector<const FilteredPoint*> path;
       for (std::size_t from = 0; from < chosen->size(); ++from)
         for (std::size_t to = 0; to < chosen->size(); ++to) {
@@ -636,6 +648,15 @@ TEST(Geodesics, ShortestPathsOfTheBruteForce) {
           }
           const double expected = brute.distance[source * count + target];
           EXPECT_NEAR(length, expected, 1e-9 * std::max(1.0, expected)) << where << ": " << source << " -> " << target;
+          if (path.size() > 1) {
+            // How the geodesic leaves its start (the views): towards its second point, and clear when
+            // straight with its open segment off the boundary.
+            const GeodesicTrees::Start start = trees.start(from, to);
+            EXPECT_EQ(start.toward.point, path[1]->exact) << where << ": " << source << " -> " << target;
+            const bool clear = path.size() == 2 && !brute.touches_boundary(path[0]->exact, path[1]->exact);
+            EXPECT_EQ(start.clear, clear) << where << ": " << source << " -> " << target;
+            touching += path.size() == 2 && !clear;
+          }
           ++checked;
           bent += path.size() > 2;
         }
@@ -643,6 +664,7 @@ TEST(Geodesics, ShortestPathsOfTheBruteForce) {
   }
   EXPECT_GT(checked, 15000);
   EXPECT_GT(bent, 6000);
+  EXPECT_GT(touching, 1000);
 }
 
 TEST(ChazelleDobkinTables, SameCountAsEveryPairOnEveryFamily) {
