@@ -132,7 +132,8 @@
 // pattern is lost. Under A18' (and n5's own completeness, chazelle_dobkin_patterns.h) S is the same
 // table as n5's, by the induction over intervals. The tests compare the counts on every family, every
 // rotation of x4-quads (both pairings), jittered x4-quads with crossing rays and with spikes where only
-// P4 fails, and many small polygons; no difference was found (nor on some 40,000 further polygons,
+// P4 fails, many small polygons, and 600 lattice polygons where 3,411 loose rays stop at a vertex
+// (SameCountOnDegenerateLatticePolygons); no difference was found (nor on some 40,000 further polygons,
 // spikes grazing loose rays included, tried while writing this), so no fallback to tips was added.
 // Four notches at a time, A18' in its strong form (an n5 X4 on four notches has a loose one on the same
 // notches and pairing) held for every n5 X4 tried but those with an angle of exactly 180 degrees at a

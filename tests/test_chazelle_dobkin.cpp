@@ -793,6 +793,24 @@ TEST(ChazelleDobkinTables, SameCountOnManySmallPolygons) {
   EXPECT_GT(compared, 500u);
 }
 
+// Degenerate position, where A18' is assumed (chazelle_dobkin_cubic.cpp): lattice polygons, where loose
+// rays stop at vertices, extensions run along edges and Steiner points fall on lines through vertices.
+// The same count as chazelle-dobkin-n5, which does not rest on Theorem 18, and many rays stopped.
+TEST(ChazelleDobkinTables, SameCountOnDegenerateLatticePolygons) {
+  std::mt19937 rng(18);
+  std::int64_t stopped = 0, polygons_with_stopped = 0;
+  for (int round = 0; round < 600; ++round) {
+    const Polygon p = lattice::lattice_polygon(16 + round % 25, 8 + round % 5, rng);
+    same_count(p, "lattice polygon " + std::to_string(round));
+    Counters counters;
+    find_algorithm("chazelle-dobkin")->run(p, counters);
+    stopped += counters["x4_rays_at_vertex"];
+    polygons_with_stopped += counters["x4_rays_at_vertex"] > 0;
+  }
+  EXPECT_GT(polygons_with_stopped, 500);
+  EXPECT_GT(stopped, 2500);
+}
+
 // ---- Theorem 18 on samples: the X4-patterns of chazelle-dobkin-n5 (tips of Q) against loose ones ----
 
 // Definition 2.4's loose X4-patterns on four notches, checked against Lemma 9 by brute force and apart
