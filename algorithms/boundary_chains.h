@@ -133,6 +133,16 @@ class SegmentSearch {
     std::size_t edge;
     bool at_vertex;
     QPoint point;
+
+    // Whether contact a comes before b in the order of p's boundary from vertex 0 on (neither does
+    // when they are one point).
+    static bool before(const Polygon& p, const Contact& a, const Contact& b) {
+      if (a.edge != b.edge) return a.edge < b.edge;
+      if (a.at_vertex || b.at_vertex) return a.at_vertex && !b.at_vertex;
+      const QPoint w = to_exact(p[a.edge]);
+      const ExactKernel::Vector_2 e = to_exact(p[p.next(a.edge)]) - w;
+      return (a.point - w) * e < (b.point - w) * e;
+    }
   };
 
   std::int64_t steps() const { return steps_; }

@@ -76,14 +76,6 @@ class LooseRays {
     if (!made) made.emplace(point(a, b));
     return *made;
   }
-  // Whether boundary place a comes before b in the order of the boundary from vertex 0 on.
-  bool before(const Place& a, const Place& b) const {
-    if (a.edge != b.edge) return a.edge < b.edge;
-    if (a.at_vertex || b.at_vertex) return a.at_vertex && !b.at_vertex;
-    const QPoint w = to_exact(p_[a.edge]);
-    const Vec e = to_exact(p_[p_.next(a.edge)]) - w;
-    return (a.point - w) * e < (b.point - w) * e;
-  }
   // The ray ends as terminals of geodesics (geodesics.h): 2a is ray a's notch, 2a + 1 its far end.
   std::vector<Place> terminals() const {
     std::vector<Place> out;
@@ -98,7 +90,7 @@ class LooseRays {
   bool share_an_end(int a, int b) const {
     for (const Place* x : {&start_[a], &end_[a]})
       for (const Place* y : {&start_[b], &end_[b]})
-        if (!before(*x, *y) && !before(*y, *x)) return true;
+        if (!Place::before(p_, *x, *y) && !Place::before(p_, *y, *x)) return true;
     return false;
   }
   std::int64_t stopped_at_vertices() const { return std::count(at_vertex_.begin(), at_vertex_.end(), 1); }
@@ -124,20 +116,13 @@ class LooseRays {
       const Vec u = z - to_exact(p[away]);
       const auto hit = shooter.shoot(v, away, false);
       if (!hit) throw std::logic_error("chazelle-dobkin: a notch's loose ray leaves the polygon");
-      const QPoint w = to_exact(p[hit->vertex]);
-      Rational reach;
-      if (hit->at_vertex) {
-        reach = ((w - z) * u) / (u * u);
-      } else {
-        const Vec e = to_exact(p[p.next(hit->vertex)]) - w;
-        reach = CGAL::determinant(w - z, e) / CGAL::determinant(u, e);
-      }
+      const Rational reach = hit_parameter(p, z, u, *hit);
       origin_.push_back(z);
       direction_.push_back(u);
       reach_.push_back(reach);
       at_vertex_.push_back(hit->at_vertex ? 1 : 0);
       start_.push_back({v, true, z});
-      end_.push_back({hit->vertex, hit->at_vertex, hit->at_vertex ? w : z + reach * u});
+      end_.push_back({hit->vertex, hit->at_vertex, hit->at_vertex ? to_exact(p[hit->vertex]) : z + reach * u});
     }
   }
 

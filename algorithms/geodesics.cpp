@@ -31,7 +31,7 @@ std::size_t funnel_tangent(const std::vector<const FilteredPoint*>& F, std::size
 GeodesicTrees::GeodesicTrees(const Polygon& p, const std::vector<Terminal>& terminals) : p_(p) {
   for (const Terminal& t : terminals) {
     site_of_terminal_.push_back(static_cast<std::uint32_t>(sites_.size()));
-    sites_.push_back({t.edge, t.at_vertex, FilteredPoint(t.point)});
+    sites_.push_back({t, FilteredPoint(t.point)});
   }
   add_chords(p);
   sort_sites();
@@ -55,14 +55,11 @@ void GeodesicTrees::add_chords(const Polygon& p) {
       const std::optional<RayShooter::Hit> hit = shooter.shoot_along(v, origin, along);
       if (!hit) throw std::logic_error("geodesics: a vertical ray into P meets no boundary");
       const std::uint32_t from = static_cast<std::uint32_t>(sites_.size());
-      sites_.push_back({v, true, FilteredPoint(to_exact(p[v]))});
-      QPoint end = to_exact(p[hit->vertex]);
-      if (!hit->at_vertex) {
-        // The edge crosses the vertical line x = p[v].x strictly between its ends.
-        const QPoint b = to_exact(p[p.next(hit->vertex)]);
-        end = end + ((Rational(p[v].x()) - end.x()) / (b.x() - end.x())) * (b - end);
-      }
-      sites_.push_back({hit->vertex, hit->at_vertex, FilteredPoint(end)});
+      const QPoint z = to_exact(p[v]);
+      const ExactKernel::Vector_2 u(0, up);
+      const QPoint end = z + hit_parameter(p, z, u, *hit) * u;
+      sites_.push_back({{v, true, z}, FilteredPoint(z)});
+      sites_.push_back({{hit->vertex, hit->at_vertex, end}, FilteredPoint(end)});
       chords_.push_back({from, from + 1});
     }
   }
@@ -71,15 +68,7 @@ void GeodesicTrees::add_chords(const Polygon& p) {
 // Sorts the sites along the boundary, merges those at one point and renumbers the chords' ends and the
 // terminals' sites; drops a chord found twice (from both its ends).
 void GeodesicTrees::sort_sites() {
-  const auto position = [&](const Site& s) {
-    const QPoint w = to_exact(p_[s.edge]);
-    return (s.point.exact - w) * (to_exact(p_[p_.next(s.edge)]) - w);
-  };
-  const auto before = [&](const Site& a, const Site& b) {
-    if (a.edge != b.edge) return a.edge < b.edge;
-    if (a.at_vertex || b.at_vertex) return a.at_vertex && !b.at_vertex;
-    return position(a) < position(b);
-  };
+  const auto before = [&](const Site& a, const Site& b) { return Terminal::before(p_, a.place, b.place); };
   std::vector<std::uint32_t> order(sites_.size());
   for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return before(sites_[a], sites_[b]); });
@@ -161,11 +150,10 @@ void GeodesicTrees::path(std::size_t from, std::size_t to, std::vector<const Fil
 
 GeodesicTrees::Start GeodesicTrees::start(std::size_t from, std::size_t to) {
   const std::uint32_t root = site_of_terminal_[from], target = site_of_terminal_[to];
-  if (root == target) return {{sites_[root].edge, sites_[root].at_vertex, sites_[root].point.exact}, false};
+  if (root == target) return {sites_[root].place, false};
   const Tree& t = tree(root);
   if (t.first[target] == kUnset) throw std::logic_error("geodesics: a site not reached by the walk");
-  const Site& toward = sites_[t.first[target]];
-  return {{toward.edge, toward.at_vertex, toward.point.exact}, t.turn[target] == root && t.clear[target] != 0};
+  return {sites_[t.first[target]].place, t.turn[target] == root && t.clear[target] != 0};
 }
 
 const GeodesicTrees::Tree& GeodesicTrees::tree(std::uint32_t root) {
@@ -201,13 +189,13 @@ void GeodesicTrees::build(std::uint32_t root, Tree& tree) {
 // vertex strictly between them, or its first such vertex lies on the segment ab (the face on its left
 // is convex, so the rest do too).
 bool GeodesicTrees::straight_arc(std::uint32_t a, std::uint32_t b) const {
-  const Site &from = sites_[a], &to = sites_[b];
+  const Terminal &from = sites_[a].place, &to = sites_[b].place;
   const std::size_t w = p_.next(from.edge);
   const bool vertex_between = !(to.edge == from.edge && !to.at_vertex) && !(to.at_vertex && to.edge == w);
   if (!vertex_between) return true;
   const FilteredPoint first(to_exact(p_[w]));
-  return orient(from.point, first, to.point) == 0 &&
-         CGAL::collinear_are_strictly_ordered_along_line(from.point.exact, first.exact, to.point.exact);
+  const FilteredPoint &fa = sites_[a].point, &fb = sites_[b].point;
+  return orient(fa, first, fb) == 0 && CGAL::collinear_are_strictly_ordered_along_line(fa.exact, first.exact, fb.exact);
 }
 
 // The root sees every site of a face at it in a straight line. The face is convex, so the segment

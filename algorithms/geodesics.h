@@ -149,9 +149,8 @@ class GeodesicTrees {
   // A point of the boundary that matters, in order along the boundary from vertex 0: a vertex, or a
   // point inside edge (edge, edge + 1).
   struct Site {
-    std::size_t edge;
-    bool at_vertex;
-    FilteredPoint point;
+    Terminal place;
+    FilteredPoint point;  // place.point, for the filtered orientations
   };
   // One side of a face's boundary, counter-clockwise: from site `from` to site `to`, along a chord or
   // (chord < 0) along the boundary of P.

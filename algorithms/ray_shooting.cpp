@@ -44,13 +44,20 @@ int dot_sign(const Point& a, const Point& b, const Point& c, const Point& d) {
   return sign_of_products(a.x(), b.x(), c.x(), d.x(), a.y(), b.y(), c.y(), d.y(), 1);
 }
 
+Rational hit_parameter(const Polygon& p, const QPoint& z, const ExactKernel::Vector_2& u, const RayShooter::Hit& hit) {
+  const QPoint w = to_exact(p[hit.vertex]);
+  if (hit.at_vertex) return ((w - z) * u) / (u * u);
+  const ExactKernel::Vector_2 e = to_exact(p[p.next(hit.vertex)]) - w;
+  return CGAL::determinant(w - z, e) / CGAL::determinant(u, e);
+}
+
 // The ray from o in direction flag * (b - a); `side` is +1 left of it.
 struct RayShooter::Ray {
   const Point& o;
   const Point& a;
   const Point& b;
   int flag;
-  int side(const Point& v) const { return flag * (&a == &o ? orient(o, b, v) : cross_sign(a, b, o, v)); }
+  int side(const Point& v) const { return flag * cross_sign(a, b, o, v); }
   int edge_turn(const Point& e0, const Point& e1) const { return flag * cross_sign(a, b, e0, e1); }
   int ahead(const Point& v) const { return flag * dot_sign(o, v, a, b); }
 };

@@ -68,6 +68,10 @@ class RayShooter {
   std::int64_t probes_ = 0;
 };
 
+// Where a ray from z in direction u (exact) meets the boundary at `hit`: the t with z + t u the point
+// met, exactly.
+Rational hit_parameter(const Polygon& p, const QPoint& z, const ExactKernel::Vector_2& u, const RayShooter::Hit& hit);
+
 // sign((b - a) x (d - c)), exactly.
 int cross_sign(const Point& a, const Point& b, const Point& c, const Point& d);
 // sign((b - a) . (d - c)), exactly.

@@ -283,11 +283,12 @@ TEST(ChazelleDobkinPatterns, FindsTheX3SeenBetweenTwoWindows) {
 
 // ---- the programs (chazelle-dobkin and chazelle-dobkin-n5) ----
 
-// Runs `name` on p, expects a valid result, returns its piece count.
-std::size_t valid_pieces(const std::string& name, const Polygon& p, const std::string& where) {
+// Runs `name` on p, expects a valid result, returns its piece count (and its counters in `counters`).
+std::size_t valid_pieces(const std::string& name, const Polygon& p, const std::string& where,
+                         Counters* counters = nullptr) {
   const Algorithm* a = find_algorithm(name);
-  Counters counters;
-  const Decomposition d = a->run(p, counters);
+  Counters own;
+  const Decomposition d = a->run(p, counters ? *counters : own);
   const Validation v = validate(p, d, Kind::Convex, true);
   EXPECT_TRUE(v.ok) << name << " on " << where << ": " << v.reason;
   return pieces_of(p, d).size();
@@ -447,9 +448,10 @@ Polygon rotated(const Polygon& p, std::size_t by) {
   return Polygon::make(ring);
 }
 
-// Both programs valid and with the same piece count; returns it.
-std::size_t same_count(const Polygon& p, const std::string& where) {
-  const std::size_t tables = valid_pieces("chazelle-dobkin", p, where);
+// Both programs valid and with the same piece count; returns it (and chazelle-dobkin's counters in
+// `counters`).
+std::size_t same_count(const Polygon& p, const std::string& where, Counters* counters = nullptr) {
+  const std::size_t tables = valid_pieces("chazelle-dobkin", p, where, counters);
   EXPECT_EQ(tables, valid_pieces("chazelle-dobkin-n5", p, where)) << where;
   return tables;
 }
@@ -687,9 +689,8 @@ TEST(ChazelleDobkinTables, FindsTheX4PatternOfEachSlitGadget) {
     const Polygon p = Polygon::make(generate("x4-quads", 12 * m + 4, 4 * m, 1));
     const std::string where = "x4-quads groups m=" + std::to_string(m);
     ASSERT_EQ(p.reflex_count(), static_cast<std::size_t>(4 * m));
-    EXPECT_EQ(same_count(p, where), static_cast<std::size_t>(3 * m + 1)) << where;
     Counters counters;
-    find_algorithm("chazelle-dobkin")->run(p, counters);
+    EXPECT_EQ(same_count(p, where, &counters), static_cast<std::size_t>(3 * m + 1)) << where;
     EXPECT_GE(counters["x4_chosen"], m) << where;
     EXPECT_EQ(counters["patterns"], m) << where;
   }
@@ -801,9 +802,8 @@ TEST(ChazelleDobkinTables, SameCountOnDegenerateLatticePolygons) {
   std::int64_t stopped = 0, polygons_with_stopped = 0;
   for (int round = 0; round < 600; ++round) {
     const Polygon p = lattice::lattice_polygon(16 + round % 25, 8 + round % 5, rng);
-    same_count(p, "lattice polygon " + std::to_string(round));
     Counters counters;
-    find_algorithm("chazelle-dobkin")->run(p, counters);
+    same_count(p, "lattice polygon " + std::to_string(round), &counters);
     stopped += counters["x4_rays_at_vertex"];
     polygons_with_stopped += counters["x4_rays_at_vertex"] > 0;
   }
