@@ -124,17 +124,26 @@
 //     GeodesicsFindTheWitnessesOfWalksAlone holds every row to walks that test each Y in turn with a
 //     segment search, and Geodesics.ShortestPathsOfTheBruteForce the trees to a brute force.
 // Proven: every witness is an X4-pattern, so the output is always a valid decomposition, with at most
-// the optimum's patterns. Assumed, not proven (call it A18'): whenever a tight X4-pattern in
-// chazelle-dobkin-n5's sense (tips of Q, Theorem 15) exists, some loose one on tight notches exists too
-// or STEP 2 already reaches the same count. That is Theorem 18 with its lost proof, which assumes
-// general position (no reduction meets a notch): where a loose ray stops at a vertex (counter
-// "x4_rays_at_vertex") the loose points beyond it do not exist, and nothing here proves that no
-// pattern is lost. Under A18' (and n5's own completeness, chazelle_dobkin_patterns.h) S is the same
+// the optimum's patterns. Taken from the thesis, not proven here (call it A18'): whenever a tight
+// X4-pattern in chazelle-dobkin-n5's sense (tips of Q, Theorem 15) exists, some loose one on tight
+// notches exists too or STEP 2 already reaches the same count. That is how STEP 3 uses Theorem 18,
+// whose proof rests on the lost Figure 2.31. The theorem is stated without a condition on position,
+// and the rays here are the thesis's r_i = R(v_i, R_i) in every position: clipped at the first
+// boundary point, a vertex included (counter "x4_rays_at_vertex"), past which no edge of an X-pattern
+// runs (Theorem 12; Lemma 9, condition 3). So the scan misses no loose X4-pattern that the theorem
+// promises; whether the lost proof covers every degenerate case (a reduction that meets a vertex)
+// cannot be checked. Under A18' (and n5's own completeness, chazelle_dobkin_patterns.h) S is the same
 // table as n5's, by the induction over intervals. The tests compare the counts on every family, every
 // rotation of x4-quads (both pairings), jittered x4-quads with crossing rays and with spikes where only
 // P4 fails, many small polygons, and 600 lattice polygons where 3,411 loose rays stop at a vertex
 // (SameCountOnDegenerateLatticePolygons); no difference was found (nor on some 40,000 further polygons,
 // spikes grazing loose rays included, tried while writing this), so no fallback to tips was added.
+// Apart from n5, with which this program shares STEPs 2 and 4, the independent checker
+// (tests/steiner_optimum_check.h) gives the same count on degenerate lattice polygons with r <= 6
+// (SteinerOptimalPrograms.AgreeWithTheCheckerOnDegenerateLatticePolygons, and 5,399 more tried while
+// writing this, 4,872 of them with loose rays stopped at vertices), and on 1,438 x4-quads and
+// x-pattern polygons snapped and jittered on lattices, where its witness holds an X4-pattern on 535
+// and also rays stop at vertices on 41.
 // Four notches at a time, A18' in its strong form (an n5 X4 on four notches has a loose one on the same
 // notches and pairing) held for every n5 X4 tried but those with an angle of exactly 180 degrees at a
 // Steiner point, which n5's closed cones accept and Lemma 9 (strict, followed here) does not: e.g.

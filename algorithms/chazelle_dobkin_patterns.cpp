@@ -28,11 +28,35 @@ std::decay_t<decltype(std::declval<V>().x())> dot(const V& u, const V& v) { retu
 template <class FT>
 int sign_of(const FT& value) { return static_cast<int>(CGAL::make_certain(CGAL::sign(value))); }
 
-// The open half-plane left of the directed line from `from` through `to`.
+// The half-plane left of the directed line from `from` through `to`, with or without that line.
 template <class P>
 struct HalfPlane {
   P from, to;
+  bool closed = false;
 };
+
+template <class P>
+bool strictly_left(const HalfPlane<P>& h, const P& q) {
+  return sign_of(cross(h.to - h.from, q - h.from)) > 0;
+}
+
+}  // namespace
+
+// The Steiner points of an X3 test: every condition taken closed gives the convex polygon K (its
+// vertices, repeated where K is a segment or a point; none when there is no Steiner point), and the
+// open conditions are kept to test points of K's boundary.
+template <class P>
+struct Region {
+  std::vector<P> vertices;
+  std::vector<HalfPlane<P>> open;
+
+  bool empty() const { return vertices.empty(); }
+  bool admits(const P& q) const {
+    return std::all_of(open.begin(), open.end(), [&](const HalfPlane<P>& h) { return strictly_left(h, q); });
+  }
+};
+
+namespace {
 
 // Where segment se meets h's line, for s and e on opposite sides of it.
 template <class P>
@@ -87,11 +111,12 @@ bool turns_before(const V& reference, const V& d1, const V& d2) {
 // 2v - w: the point such that v lies halfway between it and w (the extension of wv beyond v).
 QPoint mirrored(const QPoint& v, const QPoint& w) { return QPoint(2 * v.x() - w.x(), 2 * v.y() - w.y()); }
 
-QPoint average(const std::vector<QPoint>& points) {
-  Rational sx = 0, sy = 0;
-  for (const QPoint& q : points) sx += q.x(), sy += q.y();
-  const Rational k = static_cast<int>(points.size());
-  return QPoint(sx / k, sy / k);
+template <class P>
+P average(const std::vector<P>& points) {
+  std::decay_t<decltype(std::declval<P>().x())> sx = 0, sy = 0;
+  for (const P& q : points) sx += q.x(), sy += q.y();
+  const int k = static_cast<int>(points.size());
+  return P(sx / k, sy / k);
 }
 
 // The Steiner point's angle at the tip of a pair of notch edges: whether the edge from tip to
@@ -111,27 +136,37 @@ bool splits_reflex_side(const QPoint& a, const QPoint& b, const QPoint& tip, con
 template <class P>
 struct NotchSide {
   P v, after, lower, upper, low, high;
+  bool closed;  // the joint's cone includes its arms
 };
 
-// The open triangle, each joint's cone and, at each notch, the views across the other two (the kernel
-// of Q), intersected; returned closed, with its vertices; empty when it has no interior.
+// The open triangle, each joint's cone (with its arms where the joint allows them) and, at each notch,
+// the open side of the views across the other two (the kernel of Q), intersected. K contains the
+// region and, where K has interior, its interior lies in the region. Where K is a segment or a point
+// (a pattern that exists only in degenerate position, e.g. a Steiner point where three cones' arms
+// meet), an open condition either holds at every point of K's relative interior or at none (K was
+// clipped by its line), so the average of K's vertices decides whether the region is empty.
 template <class P>
-std::vector<P> region_of(const std::array<NotchSide<P>, 3>& sides) {
-  std::vector<P> region{sides[0].v, sides[1].v, sides[2].v};
-  if (sign_of(cross(region[1] - region[0], region[2] - region[0])) <= 0) return {};  // condition 1
+Region<P> region_of(const std::array<NotchSide<P>, 3>& sides) {
+  Region<P> region{{sides[0].v, sides[1].v, sides[2].v}, {}};
+  if (sign_of(cross(sides[1].v - sides[0].v, sides[2].v - sides[0].v)) <= 0) return {};  // condition 1
+  region.open = {{sides[0].v, sides[1].v}, {sides[1].v, sides[2].v}, {sides[2].v, sides[0].v}};
+  std::vector<HalfPlane<P>> planes;
   for (const NotchSide<P>& n : sides) {
     const auto reference = n.after - n.v, lower = n.lower - n.v, upper = n.upper - n.v;
     // Q's edges at this notch: the views across the notches ahead and behind.
     if (!turns_before(reference, n.low - n.v, upper) || !turns_before(reference, lower, n.high - n.v)) return {};
-    std::vector<HalfPlane<P>> planes{{n.v, n.lower}, {n.upper, n.v}};
-    if (turns_before(reference, lower, n.low - n.v)) planes.push_back({n.v, n.low});
-    if (turns_before(reference, n.high - n.v, upper)) planes.push_back({n.high, n.v});
-    for (const HalfPlane<P>& h : planes) {
-      region = clip(region, h);
-      if (region.size() < 3) return {};
-    }
+    planes.push_back({n.v, n.lower, n.closed});
+    planes.push_back({n.upper, n.v, n.closed});
+    // A view along an arm still bounds the region: the arm may be allowed, the view's line is not.
+    if (!turns_before(reference, n.low - n.v, lower)) planes.push_back({n.v, n.low});
+    if (!turns_before(reference, upper, n.high - n.v)) planes.push_back({n.high, n.v});
   }
-  if (sign_of(twice_area(region)) <= 0) return {};
+  for (const HalfPlane<P>& h : planes) {
+    region.vertices = clip(region.vertices, h);
+    if (region.empty()) return {};
+    if (!h.closed) region.open.push_back(h);
+  }
+  if (sign_of(twice_area(region.vertices)) <= 0 && !region.admits(average(region.vertices))) return {};
   return region;
 }
 
@@ -238,15 +273,16 @@ void Patterns::compute_bare_cones() {
     const QPoint &pv = at(v), &after = at(next(v)), &before = at(prev(v));
     bare_.push_back({k, after, before});
     bare_joint_.push_back(cone(bare_.back()));
-    forward_branch_.push_back({k, after, mirrored(pv, before)});
-    backward_branch_.push_back({k, mirrored(pv, after), before});
+    forward_branch_.push_back({k, after, mirrored(pv, before), /*closed*/ false});
+    backward_branch_.push_back({k, mirrored(pv, after), before, /*closed*/ false});
   }
 }
 
 Joint Patterns::cone(const AdaptedNotch& a) const {
   const QPoint& v = notch_point(a.notch);
-  if (cross(a.forward - v, a.backward - v) < 0) return {a.notch, mirrored(v, a.backward), mirrored(v, a.forward)};
-  return {a.notch, a.forward, a.backward};
+  if (cross(a.forward - v, a.backward - v) < 0)
+    return {a.notch, mirrored(v, a.backward), mirrored(v, a.forward), /*closed*/ true};
+  return {a.notch, a.forward, a.backward, /*closed*/ false};
 }
 
 Joint Patterns::joint(const AdaptedNotch& a) const {
@@ -270,14 +306,14 @@ bool Patterns::x2(const AdaptedNotch& a, const AdaptedNotch& b) {
   return found;
 }
 
-Joint::Joint(std::size_t notch, QPoint lower, QPoint upper)
-    : notch(notch), lower(std::move(lower)), upper(std::move(upper)), lower_approx(approximately(this->lower)),
-      upper_approx(approximately(this->upper)) {}
+Joint::Joint(std::size_t notch, QPoint lower, QPoint upper, bool closed)
+    : notch(notch), lower(std::move(lower)), upper(std::move(upper)), closed(closed),
+      lower_approx(approximately(this->lower)), upper_approx(approximately(this->upper)) {}
 
 // The region of Steiner points of Theorem 14 before condition 3 (region_of), found empty on intervals
 // where their signs settle it (the filter: when every sign it takes is certain, its branches are the
 // exact computation's), else computed on rationals.
-std::vector<QPoint> Patterns::x3_region(const std::array<const Joint*, 3>& joints) const {
+Region<QPoint> Patterns::x3_region(const std::array<const Joint*, 3>& joints) const {
   auto sides = [&](auto vertex, auto lower, auto upper) {
     std::array<NotchSide<decltype(vertex(VertexId{0}))>, 3> out;
     for (std::size_t k = 0; k < 3; ++k) {
@@ -285,7 +321,7 @@ std::vector<QPoint> Patterns::x3_region(const std::array<const Joint*, 3>& joint
       const std::size_t ahead = joints[(k + 1) % 3]->notch, behind = joints[(k + 2) % 3]->notch;
       const VertexId v = notches_[n.notch];
       out[k] = {vertex(v), vertex(next(v)), lower(n), upper(n), vertex(transition(n.notch, ahead)),
-                vertex(transition(n.notch, behind))};
+                vertex(transition(n.notch, behind)), n.closed};
     }
     return out;
   };
@@ -312,23 +348,26 @@ std::optional<QPoint> Patterns::found(const QPoint& s) {
 std::optional<QPoint> Patterns::x3(const Joint& a, const Joint& b, const Joint& c) {
   ++x3_tests_;
   const std::array<const Joint*, 3> joints{&a, &b, &c};
-  const std::vector<QPoint> region = x3_region(joints);
+  const Region<QPoint> region = x3_region(joints);
   if (region.empty()) return std::nullopt;
-  return found(average(region));
+  return found(average(region.vertices));
 }
 
 std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const Joint& c, bool counter_clockwise) {
   ++x3_tests_;
   const std::array<const Joint*, 3> joints{&a, &b, &c};
-  const std::vector<QPoint> region = x3_region(joints);
+  const Region<QPoint> region = x3_region(joints);
   if (region.empty()) return std::nullopt;
   const QPoint& v = notch_point(a.notch);
-  const QPoint* best = &region[0];
-  for (const QPoint& q : region) {
+  const QPoint* best = &region.vertices[0];
+  for (const QPoint& q : region.vertices) {
     const int turn = orient(v, *best, q);
     if (counter_clockwise ? turn > 0 : turn < 0) best = &q;
   }
-  const QPoint mid = average(region);
+  // A vertex on the extreme ray that meets the open conditions is itself a Steiner point.
+  for (const QPoint& q : region.vertices)
+    if (orient(v, *best, q) == 0 && region.admits(q)) return found(q);
+  const QPoint mid = average(region.vertices);
   const QPoint s(best->x() + (mid.x() - best->x()) / 64, best->y() + (mid.y() - best->y()) / 64);
   return found(s);
 }

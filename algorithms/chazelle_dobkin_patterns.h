@@ -30,9 +30,9 @@
 //     of Q's edges aC and aB; with Q's other four edges, the kernel of Q is the intersection of six
 //     open half-planes, one on each side of each notch.
 //   - The segments' clipping to the notch's range (R(v_i, L_i)) and to the triangle (R(v_i, v_i v_j))
-//     becomes the open range cone of each (adapted) notch and the open triangle abc: a further seven
+//     becomes the range cone of each (adapted) notch and the open triangle abc: a further seven
 //     half-planes. S is taken as the average of the vertices of this convex region (exact rationals),
-//     which lies in its interior whenever the region has positive area.
+//     which lies in its interior whenever the region has positive area (degenerate position below).
 //   - Condition 3 (C, A and B lie on the segments R(.,.), i.e. Q lies in P) needs no test of its own:
 //     with the views above it holds at every point S of the region. Suppose aS met P's boundary before
 //     S, first at p. The direction aS lies strictly between a's views across b and across c, so p lies
@@ -54,11 +54,21 @@
 //     computation's, so the region it finds empty is empty. Most triples end
 //     there without rational arithmetic (on random n = 2000, r = 200, 98% of 1.3M, and every triple
 //     on spiral r = 198): chazelle-dobkin 14.2 s -> 3.2 s and 9.5 s -> 1.5 s on those inputs.
-//   - Steiner points whose region has no interior (patterns that exist only in degenerate position,
-//     an edge through a vertex of P or exactly along a window) are not reported.
+//   - Degenerate position. A joint whose angle is still reflex includes its arms: an edge along the
+//     extension of one of the angle's sides leaves 180 degrees there, which resolves it (Definition
+//     2.2 forbids reflex angles only), and the proof of condition 3 above holds for it unchanged (that
+//     direction points into P's interior). The triangle and the views stay open: S on a side of the
+//     triangle puts a straight angle at S between two notches, whose diagonal is then an X2-pattern
+//     on its own; S on a window line puts a vertex of P on S's edge, also where the window line runs
+//     along an arm (then both bound the region, the arm allowed and the view's line not). So the
+//     region may be a segment or a single point (e.g. three cones' arms through one point, on
+//     lattice polygons), and then S is the average of its vertices, a point of its relative
+//     interior. Such patterns are real: the independent checker (tests/steiner_optimum_check.h)
+//     needs one for the optimum of the test case "three range arms through one point".
 //   - Corollary 14.2 (a subtree's Steiner point chosen to turn its edge at z_i as far as possible):
-//     the extreme vertex of the same region, seen from z_i; it lies on the region's boundary, so it
-//     is moved 1/64 of the way towards the region's average, into the interior.
+//     the extreme vertex of the same region, seen from z_i. It lies on the region's boundary: it is
+//     the Steiner point when it meets the open conditions (it lies on arms of joints only), and is
+//     otherwise moved 1/64 of the way towards the region's average, into the (relative) interior.
 //   - X4 (Theorem 15): "applying the two reductions ... takes A to the intersection of v_i r_ij and
 //     v_j l_ji": each Steiner point is put at the tip of Q facing the chain between its two notches,
 //     where each notch's edge is turned as far towards that chain as its range, its view across the
@@ -110,16 +120,24 @@ struct AdaptedNotch {
   QPoint backward;    // a point of the backward arm other than the notch
 };
 
+// The region of Steiner points of an X3 test (chazelle_dobkin_patterns.cpp).
+template <class P>
+struct Region;
+
 // Points with interval coordinates, for filters in front of exact computations.
 using IntervalKernel = CGAL::Simple_cartesian<CGAL::Interval_nt<false>>;
 
-// The directions allowed at a notch for its edge to a Steiner point: the open cone of the X with
-// orient(v, lower, X) > 0 and orient(v, upper, X) < 0, less than 180 degrees wide (or a half-plane).
+// The directions allowed at a notch for its edge to a Steiner point: the cone of the X with
+// orient(v, lower, X) > 0 and orient(v, upper, X) < 0, less than 180 degrees wide (or a half-plane),
+// with its arms (= 0) when `closed`: where the angle still open is reflex, the arms are the extensions
+// of its sides, and an edge along one leaves 180 degrees on one side and resolves the angle; where it
+// is not, the arms are its sides, which an edge may not run along.
 struct Joint {
-  Joint(std::size_t notch, QPoint lower, QPoint upper);
+  Joint(std::size_t notch, QPoint lower, QPoint upper, bool closed);
 
   std::size_t notch;
   QPoint lower, upper;
+  bool closed;
   // lower and upper on intervals, for the filter of the X3 test.
   IntervalKernel::Point_2 lower_approx, upper_approx;
 };
@@ -165,9 +183,10 @@ class Patterns {
 
   // Theorem 14 on joints a, b, c at distinct notches in counter-clockwise boundary order: a Steiner
   // point S such that Sa, Sb, Sc lie in P, leave S without a reflex angle and each lies in its joint's
-  // cone; or nothing. O(1) (see the header comment). `x3` returns the average of the region's vertices; `x3_extreme` the point of the region turned furthest around a (counter-clockwise
-  // when `counter_clockwise`), moved 1/64 of the way towards that average so that it is interior
-  // (Corollary 14.2; see the header comment).
+  // cone; or nothing. O(1) (see the header comment). `x3` returns the average of the region's
+  // vertices; `x3_extreme` the vertex turned furthest around a (counter-clockwise when
+  // `counter_clockwise`) if it is a Steiner point, else that vertex moved 1/64 of the way towards the
+  // average (Corollary 14.2; see the header comment).
   std::optional<QPoint> x3(const Joint& a, const Joint& b, const Joint& c);
   std::optional<QPoint> x3_extreme(const Joint& a, const Joint& b, const Joint& c, bool counter_clockwise);
 
@@ -212,7 +231,7 @@ class Patterns {
   void views_from_geodesics();
   void compute_bare_cones();
   Joint cone(const AdaptedNotch& a) const;
-  std::vector<QPoint> x3_region(const std::array<const Joint*, 3>& joints) const;
+  Region<QPoint> x3_region(const std::array<const Joint*, 3>& joints) const;
   std::optional<QPoint> found(const QPoint& s);
   const std::optional<QPoint>& tip(std::size_t a, std::size_t b);
 

@@ -177,7 +177,9 @@ TEST(ChazelleDobkinPatterns, EveryX3FoundSavesOnePiece) {
 }
 
 // The definition of an X3 Steiner point, written out apart from the detector: strictly inside the
-// triangle of its notches, strictly inside each notch's range, and each edge free of P's boundary.
+// triangle of its notches (a point on a side would make that side a diagonal, an X2-pattern), in each
+// notch's closed range (an edge along the extension of a side of the notch leaves 180 degrees there),
+// and each edge free of P's boundary.
 bool is_x3_steiner(const Polygon& p, const std::array<VertexId, 3>& v, const QPoint& s) {
   std::array<QPoint, 3> q;
   for (int k = 0; k < 3; ++k) q[k] = to_exact(p[v[k]]);
@@ -185,7 +187,7 @@ bool is_x3_steiner(const Polygon& p, const std::array<VertexId, 3>& v, const QPo
     if (orient(q[k], q[(k + 1) % 3], s) <= 0) return false;
   for (int k = 0; k < 3; ++k) {
     const QPoint before = to_exact(p[p.prev(v[k])]), after = to_exact(p[p.next(v[k])]);
-    if (orient(before, q[k], s) <= 0 || orient(q[k], after, s) <= 0) return false;
+    if (orient(before, q[k], s) < 0 || orient(q[k], after, s) < 0) return false;
     const ExactSegment edge(q[k], s);
     for (std::size_t e = 0; e < p.size(); ++e) {
       if (e == v[k] || p.next(e) == v[k]) continue;
@@ -233,11 +235,38 @@ TEST(ChazelleDobkinPatterns, GeodesicsAndTheTriangulationGiveTheSameViews) {
   EXPECT_GT(hidden, 50000u);
 }
 
-// Where the detector finds no X3, no point of a grid over the triangle is an X3 Steiner point.
-TEST(ChazelleDobkinPatterns, NoX3MissedOnAGrid) {
+// Candidate Steiner points for notches v: a barycentric grid over their triangle, all weights positive,
+// and every point where two of the lines through the notches' sides cross (where a degenerate region,
+// a segment or a point, lies: e.g. arms of all three ranges through one point).
+std::vector<QPoint> x3_candidates(const Polygon& p, const std::array<VertexId, 3>& v) {
   constexpr int kGrid = 10;
-  for (const Sample& s : small_samples()) {
-    const Polygon p = make(s);
+  std::array<QPoint, 3> q;
+  for (int k = 0; k < 3; ++k) q[k] = to_exact(p[v[k]]);
+  std::vector<QPoint> out;
+  for (int a = 1; a < kGrid; ++a)
+    for (int b = 1; a + b < kGrid; ++b) {
+      const int c = kGrid - a - b;
+      out.emplace_back((a * q[0].x() + b * q[1].x() + c * q[2].x()) / kGrid, (a * q[0].y() + b * q[1].y() + c * q[2].y()) / kGrid);
+    }
+  std::vector<ExactKernel::Line_2> lines;
+  for (int k = 0; k < 3; ++k) {
+    lines.emplace_back(to_exact(p[p.prev(v[k])]), q[k]);
+    lines.emplace_back(q[k], to_exact(p[p.next(v[k])]));
+  }
+  for (std::size_t a = 0; a < lines.size(); ++a)
+    for (std::size_t b = a + 1; b < lines.size(); ++b) {
+      const auto crossing = CGAL::intersection(lines[a], lines[b]);
+      if (!crossing) continue;
+      if (const QPoint* x = boost::get<QPoint>(&*crossing)) out.push_back(*x);
+    }
+  return out;
+}
+
+// Where the detector finds no X3, no candidate is an X3 Steiner point: on the small family polygons,
+// and on lattice polygons, where candidates fall on arms of ranges and lines through vertices.
+TEST(ChazelleDobkinPatterns, NoX3MissedAmongCandidates) {
+  std::size_t triples = 0;
+  auto check = [&](const Polygon& p, const std::string& where) {
     cd::Patterns patterns(p);
     const auto& notches = patterns.notches();
     const std::size_t r = notches.size();
@@ -247,16 +276,16 @@ TEST(ChazelleDobkinPatterns, NoX3MissedOnAGrid) {
           if (patterns.x3(patterns.joint(patterns.bare(i)), patterns.joint(patterns.bare(j)), patterns.joint(patterns.bare(k)))) continue;
           const std::array<VertexId, 3> v{notches[i], notches[j], notches[k]};
           if (orient(p[v[0]], p[v[1]], p[v[2]]) <= 0) continue;
-          // Barycentric grid points (a, b, c) / kGrid, all strictly positive.
-          for (int a = 1; a < kGrid; ++a)
-            for (int b = 1; a + b < kGrid; ++b) {
-              const int c = kGrid - a - b;
-              const QPoint x((a * to_exact(p[v[0]]).x() + b * to_exact(p[v[1]]).x() + c * to_exact(p[v[2]]).x()) / kGrid,
-                             (a * to_exact(p[v[0]]).y() + b * to_exact(p[v[1]]).y() + c * to_exact(p[v[2]]).y()) / kGrid);
-              EXPECT_FALSE(is_x3_steiner(p, v, x)) << label(s) << " triple " << i << "," << j << "," << k;
-            }
+          ++triples;
+          for (const QPoint& x : x3_candidates(p, v))
+            EXPECT_FALSE(is_x3_steiner(p, v, x)) << where << " triple " << i << "," << j << "," << k << " at " << x;
         }
-  }
+  };
+  for (const Sample& s : small_samples()) check(make(s), label(s));
+  std::mt19937 rng(14);
+  for (int round = 0; round < 300; ++round)
+    check(lattice::lattice_polygon(10 + round % 15, 5 + round % 6, rng), "lattice polygon " + std::to_string(round));
+  EXPECT_GT(triples, 5000u);
 }
 
 // Notch a (the dent in the bottom) looks up a corridor between notches x and y onto the far wall of a

@@ -8,12 +8,14 @@
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"
+#include "tests/lattice_polygons.h"
 #include "tests/steiner_optimum_check.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -95,6 +97,11 @@ std::vector<Case> hand_made() {
       {"zigzag", polygon({{0, 0}, {6, 0}, {6, 2}, {5, 1}, {4, 2}, {3, 1}, {2, 2}, {1, 1}, {0, 2}})},
       {"spiral", polygon({{0, 0}, {6, 0}, {6, 6}, {1, 6}, {1, 2}, {4, 2}, {4, 4}, {3, 4}, {3, 3}, {2, 3}, {2, 5}, {5, 5}, {5, 1}, {0, 1}})},
       {"two notches on one line", polygon({{0, 0}, {8, 0}, {8, 4}, {6, 4}, {5, 2}, {4, 4}, {3, 2}, {2, 4}, {0, 4}})},
+      // 5 pieces: the diagonal (7, 4)-(7, 7), and the diagonal (6, 1)-(6, 4) continued straight through the
+      // spike's tip (6, 4) to the only Steiner point (6, 7) that also joins (7, 8) and (3, 7): there the
+      // arms of all three notches' ranges meet (a joint's region with no interior).
+      {"three range arms through one point",
+       polygon({{6, 4}, {1, 7}, {0, 0}, {6, 1}, {7, 0}, {7, 4}, {8, 1}, {9, 1}, {9, 2}, {7, 7}, {7, 8}, {8, 9}, {0, 8}, {3, 7}, {2, 7}})},
   };
 }
 
@@ -258,6 +265,22 @@ TEST(SteinerOptimalPrograms, AgreeWithTheCheckerOnEveryRotation) {
     const std::size_t best = checked(c.polygon, c.label).pieces;
     for (std::size_t k = 0; k < c.polygon.size(); ++k)
       expect_programs_agree(Polygon::make(rotated(c.polygon, k)), best, c.label + " rotated " + std::to_string(k));
+  }
+}
+
+// Degenerate lattice polygons with 3 to 6 notches (tests/lattice_polygons.h): Steiner points where arms
+// of ranges meet, edges along extensions of P's edges, straight angles at notches, rays stopped at
+// vertices. The checker allows all of these (its header).
+TEST(SteinerOptimalPrograms, AgreeWithTheCheckerOnDegenerateLatticePolygons) {
+  if (steiner_optimal_programs().empty()) GTEST_SKIP() << "nothing to compare (see AreRegistered)";
+  std::mt19937 rng(2026);
+  int compared = 0;
+  for (int round = 0; compared < 150; ++round) {
+    const Polygon p = lattice::lattice_polygon(10 + round % 15, 5 + round % 6, rng);
+    if (p.reflex_count() < 3 || p.reflex_count() > steiner_check::kMaxReflex) continue;
+    const std::string label = "lattice polygon " + std::to_string(round);
+    expect_programs_agree(p, checked(p, label).pieces, label);
+    ++compared;
   }
 }
 
