@@ -43,8 +43,8 @@ bool strictly_left(const HalfPlane<P>& h, const P& q) {
 }  // namespace
 
 // The Steiner points of an X3 test: every condition taken closed gives the convex polygon K (its
-// vertices, repeated where K is a segment or a point; none when there is no Steiner point), and the
-// open conditions are kept to test points of K's boundary.
+// vertices, possibly with repeats; a segment or a single point where K has no interior; none when
+// there is no Steiner point), and the open conditions are kept to test points of K's boundary.
 template <class P>
 struct Region {
   std::vector<P> vertices;
@@ -358,11 +358,14 @@ std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const
   const std::array<const Joint*, 3> joints{&a, &b, &c};
   const Region<QPoint> region = x3_region(joints);
   if (region.empty()) return std::nullopt;
+  // K's vertices other than a itself (a is one when it lies inside the other joints' cones; it is
+  // never a Steiner point, and every direction from it ties).
   const QPoint& v = notch_point(a.notch);
-  const QPoint* best = &region.vertices[0];
+  const QPoint* best = nullptr;
   for (const QPoint& q : region.vertices) {
-    const int turn = orient(v, *best, q);
-    if (counter_clockwise ? turn > 0 : turn < 0) best = &q;
+    if (q == v) continue;
+    const int turn = best ? orient(v, *best, q) : 0;
+    if (!best || (counter_clockwise ? turn > 0 : turn < 0)) best = &q;
   }
   // A vertex on the extreme ray that meets the open conditions is itself a Steiner point.
   for (const QPoint& q : region.vertices)

@@ -47,7 +47,9 @@
 //     the half-planes alone, O(1). (Checked while writing this against a test of S's three edges
 //     against the boundary: every candidate of both programs on 3,530 polygons, 20,405 candidates,
 //     and every triple of bare notches and branches on 2,080 polygons, 872,436 candidates, collinear
-//     vertices included; no edge failed.)
+//     vertices included; no edge failed. Those figures are from before the arms were allowed
+//     (below); since, every output of both programs passed the validator on 7,000 lattice
+//     polygons, mean r 12 and 17, and 300 more with r from 11 to 26.)
 //   - Filter (not in the thesis; it changes no answer): the region is first computed in interval
 //     arithmetic, by the same code as the exact one (one template on both kernels), which gives up at
 //     the first sign it cannot settle; when it settles every sign, its branches are the exact
@@ -57,14 +59,17 @@
 //   - Degenerate position. A joint whose angle is still reflex includes its arms: an edge along the
 //     extension of one of the angle's sides leaves 180 degrees there, which resolves it (Definition
 //     2.2 forbids reflex angles only), and the proof of condition 3 above holds for it unchanged (that
-//     direction points into P's interior). The triangle and the views stay open: S on a side of the
-//     triangle puts a straight angle at S between two notches, whose diagonal is then an X2-pattern
-//     on its own; S on a window line puts a vertex of P on S's edge, also where the window line runs
-//     along an arm (then both bound the region, the arm allowed and the view's line not). So the
-//     region may be a segment or a single point (e.g. three cones' arms through one point, on
-//     lattice polygons), and then S is the average of its vertices, a point of its relative
-//     interior. Such patterns are real: the independent checker (tests/steiner_optimum_check.h)
-//     needs one for the optimum of the test case "three range arms through one point".
+//     direction points into P's interior). The views stay open: S on a window line puts a vertex
+//     of P on S's edge, also where the window line runs along an arm (then both bound the region,
+//     the arm allowed and the view's line not). The triangle stays open as the thesis's angles at S
+//     are: S on a side puts a straight angle at S, and the two notches' edges form one segment
+//     between them that resolves both; for bare notches that is an X2-pattern on its own, for
+//     adapted ones (Y3, Y4) that the program loses nothing is not proven here (the checker, which
+//     allows such points, found no case). So the region may be a segment or a single point (e.g.
+//     where arms of three joints meet, on lattice polygons), and then S is the average of its
+//     vertices, a point of its relative interior. Such patterns are real: the independent checker
+//     (tests/steiner_optimum_check.h) needs one for the optimum of the test case "arms of three
+//     joints through one point".
 //   - Corollary 14.2 (a subtree's Steiner point chosen to turn its edge at z_i as far as possible):
 //     the extreme vertex of the same region, seen from z_i. It lies on the region's boundary: it is
 //     the Steiner point when it meets the open conditions (it lies on arms of joints only), and is
@@ -129,9 +134,11 @@ using IntervalKernel = CGAL::Simple_cartesian<CGAL::Interval_nt<false>>;
 
 // The directions allowed at a notch for its edge to a Steiner point: the cone of the X with
 // orient(v, lower, X) > 0 and orient(v, upper, X) < 0, less than 180 degrees wide (or a half-plane),
-// with its arms (= 0) when `closed`: where the angle still open is reflex, the arms are the extensions
-// of its sides, and an edge along one leaves 180 degrees on one side and resolves the angle; where it
-// is not, the arms are its sides, which an edge may not run along.
+// with its arms (= 0) when `closed`. A notch's joint is closed where the angle still open there is
+// reflex: its arms are the extensions of that angle's sides, and an edge along one leaves 180
+// degrees on one side and resolves the angle. It is open where the angle is not reflex (its arms
+// are then the angle's sides, which an edge may not run along), and so are the branches (an edge
+// along a branch's arm resolves the notch, so it is not a branch).
 struct Joint {
   Joint(std::size_t notch, QPoint lower, QPoint upper, bool closed);
 

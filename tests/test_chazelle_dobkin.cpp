@@ -235,9 +235,10 @@ TEST(ChazelleDobkinPatterns, GeodesicsAndTheTriangulationGiveTheSameViews) {
   EXPECT_GT(hidden, 50000u);
 }
 
-// Candidate Steiner points for notches v: a barycentric grid over their triangle, all weights positive,
-// and every point where two of the lines through the notches' sides cross (where a degenerate region,
-// a segment or a point, lies: e.g. arms of all three ranges through one point).
+// Candidate Steiner points for notches v: a barycentric grid over their triangle, all weights positive;
+// every point where two of the lines through the notches' sides cross, and the midpoints between
+// consecutive crossings along each line: where a degenerate region (a point, or a segment along an arm
+// of a range) lies.
 std::vector<QPoint> x3_candidates(const Polygon& p, const std::array<VertexId, 3>& v) {
   constexpr int kGrid = 10;
   std::array<QPoint, 3> q;
@@ -253,17 +254,24 @@ std::vector<QPoint> x3_candidates(const Polygon& p, const std::array<VertexId, 3
     lines.emplace_back(to_exact(p[p.prev(v[k])]), q[k]);
     lines.emplace_back(q[k], to_exact(p[p.next(v[k])]));
   }
-  for (std::size_t a = 0; a < lines.size(); ++a)
-    for (std::size_t b = a + 1; b < lines.size(); ++b) {
-      const auto crossing = CGAL::intersection(lines[a], lines[b]);
+  for (const ExactKernel::Line_2& line : lines) {
+    std::vector<QPoint> on;
+    for (const ExactKernel::Line_2& other : lines) {
+      const auto crossing = CGAL::intersection(line, other);
       if (!crossing) continue;
-      if (const QPoint* x = boost::get<QPoint>(&*crossing)) out.push_back(*x);
+      if (const QPoint* x = boost::get<QPoint>(&*crossing)) on.push_back(*x);
     }
+    std::sort(on.begin(), on.end(), [](const QPoint& s, const QPoint& t) { return CGAL::compare_xy(s, t) < 0; });
+    for (std::size_t k = 0; k < on.size(); ++k) {
+      out.push_back(on[k]);
+      if (k + 1 < on.size()) out.emplace_back((on[k].x() + on[k + 1].x()) / 2, (on[k].y() + on[k + 1].y()) / 2);
+    }
+  }
   return out;
 }
 
 // Where the detector finds no X3, no candidate is an X3 Steiner point: on the small family polygons,
-// and on lattice polygons, where candidates fall on arms of ranges and lines through vertices.
+// and on lattice polygons, where candidates fall on arms of ranges and where arms meet.
 TEST(ChazelleDobkinPatterns, NoX3MissedAmongCandidates) {
   std::size_t triples = 0;
   auto check = [&](const Polygon& p, const std::string& where) {

@@ -99,8 +99,9 @@ std::vector<Case> hand_made() {
       {"two notches on one line", polygon({{0, 0}, {8, 0}, {8, 4}, {6, 4}, {5, 2}, {4, 4}, {3, 2}, {2, 4}, {0, 4}})},
       // 5 pieces: the diagonal (7, 4)-(7, 7), and the diagonal (6, 1)-(6, 4) continued straight through the
       // spike's tip (6, 4) to the only Steiner point (6, 7) that also joins (7, 8) and (3, 7): there the
-      // arms of all three notches' ranges meet (a joint's region with no interior).
-      {"three range arms through one point",
+      // extension of that diagonal meets the extensions of an edge of each of the two other notches (an
+      // X3 region with no interior, at a joint adapted to the diagonal).
+      {"arms of three joints through one point",
        polygon({{6, 4}, {1, 7}, {0, 0}, {6, 1}, {7, 0}, {7, 4}, {8, 1}, {9, 1}, {9, 2}, {7, 7}, {7, 8}, {8, 9}, {0, 8}, {3, 7}, {2, 7}})},
   };
 }
@@ -112,6 +113,7 @@ TEST(SteinerOptimumCheck, KnownAnswers) {
   // Two horizontal X2-patterns at the star's waist; the two X2-patterns through its centre cross.
   EXPECT_EQ(checked(hand_made()[2].polygon, "star").pieces, 3u);
   EXPECT_EQ(checked(hand_made()[1].polygon, "plus").pieces, 3u);
+  EXPECT_EQ(checked(hand_made()[6].polygon, "arms of three joints through one point").pieces, 5u);
 }
 
 TEST(SteinerOptimumCheck, SlitTriangleNeedsItsSteinerPoint) {
