@@ -137,8 +137,9 @@ using IntervalKernel = CGAL::Simple_cartesian<CGAL::Interval_nt<false>>;
 // with its arms (= 0) when `closed`. A notch's joint is closed where the angle still open there is
 // reflex: its arms are the extensions of that angle's sides, and an edge along one leaves 180
 // degrees on one side and resolves the angle. It is open where the angle is not reflex (its arms
-// are then the angle's sides, which an edge may not run along), and so are the branches (an edge
-// along a branch's arm resolves the notch, so it is not a branch).
+// are then the angle's sides, which an edge may not run along), and so are the branches (a branch's
+// arms are a side of P, which an edge may not run along, and an extension, along which an edge
+// resolves the notch and so is no branch).
 struct Joint {
   Joint(std::size_t notch, QPoint lower, QPoint upper, bool closed);
 
