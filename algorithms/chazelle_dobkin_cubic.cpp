@@ -146,9 +146,9 @@
 // and also rays stop at vertices on 41.
 // Four notches at a time, A18' in its strong form (an n5 X4 on four notches has a loose one on the same
 // notches and pairing) held for every n5 X4 tried but those with an angle of exactly 180 degrees at a
-// Steiner point, which n5's X4 test accepts (splits_reflex_side) and Lemma 9 (strict, followed here) does not: e.g.
-// random n=28 r=8 seed=45, notches 0, 1 | 4, 7, tips (-67/7, -80/7) and (-23/5, 92/5) on one line
-// with z_0. Such patterns never changed a count (STEP 2 reached the same); the test
+// Steiner point, which n5's X4 test accepts (splits_reflex_side) and Lemma 9 (strict, followed here)
+// does not: e.g. random n=28 r=8 seed=45, notches 0, 1 | 4, 7, tips (-67/7, -80/7) and (-23/5, 92/5)
+// on one line with z_0. Such patterns never changed a count (STEP 2 reached the same); the test
 // EveryTipX4HasALooseX4OnTheSameNotches checks the strong form on samples.
 // Deviations.
 // - The thesis's text stops before saying how its scans test P4; its "O(N) per interval after O(N^3)

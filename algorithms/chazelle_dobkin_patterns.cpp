@@ -361,12 +361,10 @@ std::optional<QPoint> Patterns::x3_extreme(const Joint& a, const Joint& b, const
   // K's vertices other than a itself (a is one when it lies inside the other joints' cones; it is
   // never a Steiner point, and every direction from it ties).
   const QPoint& v = notch_point(a.notch);
+  const int further = counter_clockwise ? 1 : -1;
   const QPoint* best = nullptr;
-  for (const QPoint& q : region.vertices) {
-    if (q == v) continue;
-    const int turn = best ? orient(v, *best, q) : 0;
-    if (!best || (counter_clockwise ? turn > 0 : turn < 0)) best = &q;
-  }
+  for (const QPoint& q : region.vertices)
+    if (q != v && (!best || orient(v, *best, q) == further)) best = &q;
   // A vertex on the extreme ray that meets the open conditions is itself a Steiner point.
   for (const QPoint& q : region.vertices)
     if (orient(v, *best, q) == 0 && region.admits(q)) return found(q);
