@@ -67,7 +67,9 @@ Decomposition cgal_cdt(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"cgal-cdt", Kind::Triangulation, false, false, "n*log(n)", "== n-2",
-                             "CGAL 5.5 Constrained_Delaunay_triangulation_2, inside faces", 1000000, cgal_cdt});
+REGISTER_ALGORITHM({.name = "cgal-cdt", .kind = Kind::Triangulation, .time_bound = "n*log(n)",
+                    .pieces_bound = "== n-2",
+                    .source = "CGAL 5.5 Constrained_Delaunay_triangulation_2, inside faces",
+                    .peer = "CGAL 5.5", .run = cgal_cdt});
 
 }  // namespace pd

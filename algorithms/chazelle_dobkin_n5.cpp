@@ -1,7 +1,7 @@
 // chazelle-dobkin-n5: optimal convex decomposition with Steiner points, Algorithm CD with Theorem 15's
 // X4 detection (B. Chazelle, Computational Geometry and Convexity, thesis, Yale 1980 (000), Sec. 2.3,
 // Theorems 13-17). The dynamic program (STEPs 1-5), its orientation and its reconstructions are in
-// algorithms/chazelle_dobkin.h; pattern detection in algorithms/chazelle_dobkin_patterns.h.
+// engines/chazelle_dobkin/program.h; pattern detection in engines/chazelle_dobkin/patterns.h.
 //
 // STEP 3's B: X4-patterns are tried for every pair of inner notches of the interval, in both pairings
 // (Figure 2.24-a, -b: the first Steiner point joins z_i and z_k, or z_k and z_l), with the Steiner
@@ -17,7 +17,8 @@
 // O(r log(n/r)); STEP 5 O(n + r^2 log(n/r)): O(n + r^5 log(n/r)) (Theorem 17). Space O(r^2 + n). Pre: a
 // simple counter-clockwise polygon. Output: an optimal convex decomposition (OPT = r + 1 - the most
 // compatible patterns), Steiner points exact.
-#include "algorithms/chazelle_dobkin.h"
+#include "core/registry.h"
+#include "engines/chazelle_dobkin/program.h"
 
 namespace pd {
 namespace {
@@ -44,7 +45,9 @@ Decomposition chazelle_dobkin_n5(const Polygon& p, Counters& counters) { return 
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"chazelle-dobkin-n5", Kind::Convex, true, true, "n+r^5*log(n/r)", "== OPT",
-                             "Chazelle thesis (000) Sec. 2.3, Thms 13-17", 20000, chazelle_dobkin_n5});
+REGISTER_ALGORITHM({.name = "chazelle-dobkin-n5", .kind = Kind::Convex, .steiner = true, .optimal = true,
+                    .time_bound = "n+r^5*log(n/r)", .pieces_bound = "== OPT",
+                    .source = "Chazelle thesis (000) Sec. 2.3, Thms 13-17", .size_ceiling = 20000,
+                    .run = chazelle_dobkin_n5});
 
 }  // namespace pd

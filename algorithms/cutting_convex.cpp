@@ -25,7 +25,7 @@
 // - Ray hits are compared exactly, as rationals; every other test is an orientation.
 // - A part's notches are resolved one at a time: the one or two diagonals from a notch are applied at
 //   once (two or three parts), and the parts are then resolved recursively.
-#include "algorithms/polygon_cutting.h"
+#include "engines/cutting/polygon_cutting.h"
 #include "core/registry.h"
 
 #include <algorithm>
@@ -188,7 +188,8 @@ Decomposition cutting_convex(const Polygon& p, Counters& counters) { return Conv
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"cutting-convex", Kind::Convex, false, false, "n*log(n)", "< 4.333*OPT",
-                             "Chazelle 1982 (004) Sec. 3.1, Thm 7", 1000000, cutting_convex});
+REGISTER_ALGORITHM({.name = "cutting-convex", .kind = Kind::Convex, .time_bound = "n*log(n)",
+                    .pieces_bound = "< 4.333*OPT", .source = "Chazelle 1982 (004) Sec. 3.1, Thm 7",
+                    .run = cutting_convex});
 
 }  // namespace pd

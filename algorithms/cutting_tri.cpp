@@ -14,7 +14,7 @@
 // vertex whose closed triangle holds no other vertex of the part (one always exists). Parts are
 // sub-cycles of the top polygon carrying LH and LV restricted to them, so no polygon is rebuilt or
 // checked again.
-#include "algorithms/polygon_cutting.h"
+#include "engines/cutting/polygon_cutting.h"
 #include "core/registry.h"
 
 #include <algorithm>
@@ -92,7 +92,8 @@ Decomposition cutting_tri(const Polygon& p, Counters& counters) { return Triangu
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"cutting-tri", Kind::Triangulation, false, false, "n*log(n)", "== n-2",
-                             "Chazelle 1982 (004) Sec. 3.2, Thm 8", 1000000, cutting_tri});
+REGISTER_ALGORITHM({.name = "cutting-tri", .kind = Kind::Triangulation, .time_bound = "n*log(n)",
+                    .pieces_bound = "== n-2", .source = "Chazelle 1982 (004) Sec. 3.2, Thm 8",
+                    .run = cutting_tri});
 
 }  // namespace pd

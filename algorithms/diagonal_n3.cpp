@@ -11,7 +11,8 @@
 // diagonals are sorted in the order `diagonal-n4` picks them (shortest first, ties by endpoints,
 // O(n^2 log n)), and each is output unless it crosses one already output (O(n) each). A diagonal
 // crossing an output one never becomes proper again, so the output is `diagonal-n4`'s, in its order.
-#include "algorithms/diagonal_test.h"
+#include "core/registry.h"
+#include "engines/triangulation/diagonal_test.h"
 
 #include <algorithm>
 #include <vector>
@@ -50,7 +51,9 @@ Decomposition diagonal_n3(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"diagonal-n3", Kind::Triangulation, false, false, "n^3", "== n-2",
-                             "Rosen slides (003), diagonal-based triangulation made O(n^3)", 1000, diagonal_n3});
+REGISTER_ALGORITHM({.name = "diagonal-n3", .kind = Kind::Triangulation, .time_bound = "n^3",
+                    .pieces_bound = "== n-2",
+                    .source = "Rosen slides (003), diagonal-based triangulation made O(n^3)",
+                    .size_ceiling = 1000, .run = diagonal_n3});
 
 }  // namespace pd

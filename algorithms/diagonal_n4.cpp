@@ -14,7 +14,8 @@
 // non-crossing diagonals triangulates the polygon, and with collinear vertices too its faces are
 // non-degenerate triangles (a face with more than three vertices still has a diagonal), so n-3 rounds
 // always find one.
-#include "algorithms/diagonal_test.h"
+#include "core/registry.h"
+#include "engines/triangulation/diagonal_test.h"
 
 #include <optional>
 #include <vector>
@@ -73,7 +74,9 @@ Decomposition diagonal_n4(const Polygon& p, Counters& counters) { return Repeate
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"diagonal-n4", Kind::Triangulation, false, false, "n^4", "== n-2",
-                             "Rosen slides (003), diagonal-based triangulation, O(n^4)", 200, diagonal_n4});
+REGISTER_ALGORITHM({.name = "diagonal-n4", .kind = Kind::Triangulation, .time_bound = "n^4",
+                    .pieces_bound = "== n-2",
+                    .source = "Rosen slides (003), diagonal-based triangulation, O(n^4)",
+                    .size_ceiling = 200, .run = diagonal_n4});
 
 }  // namespace pd

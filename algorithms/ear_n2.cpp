@@ -91,7 +91,9 @@ Decomposition ear_n2(const Polygon& p, Counters& counters) { return EarClipper(p
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"ear-n2", Kind::Triangulation, false, false, "n^2", "== n-2",
-                             "Rosen slides (003), ear clipping with ear-status updates", 20000, ear_n2});
+REGISTER_ALGORITHM({.name = "ear-n2", .kind = Kind::Triangulation, .time_bound = "n^2",
+                    .pieces_bound = "== n-2",
+                    .source = "Rosen slides (003), ear clipping with ear-status updates",
+                    .size_ceiling = 20000, .run = ear_n2});
 
 }  // namespace pd

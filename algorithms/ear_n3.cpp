@@ -86,7 +86,9 @@ Decomposition ear_n3(const Polygon& p, Counters& counters) { return FreshEarClip
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"ear-n3", Kind::Triangulation, false, false, "n^3", "== n-2",
-                             "Rosen slides (003), ear clipping, ear status recomputed each round", 1000, ear_n3});
+REGISTER_ALGORITHM({.name = "ear-n3", .kind = Kind::Triangulation, .time_bound = "n^3",
+                    .pieces_bound = "== n-2",
+                    .source = "Rosen slides (003), ear clipping, ear status recomputed each round",
+                    .size_ceiling = 1000, .run = ear_n3});
 
 }  // namespace pd

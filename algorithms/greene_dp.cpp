@@ -11,7 +11,8 @@
 // each diagonal as a convex chain of sides (convex_chains.h). This is the O(n^2 r^2) form; the slides
 // give only the bound, so the inner program's details (a pointer and a running minimum per vertex, one
 // chain program per first side at a reflex end) are a reconstruction.
-#include "algorithms/convex_chains.h"
+#include "core/registry.h"
+#include "engines/convex/convex_chains.h"
 
 namespace pd {
 namespace {
@@ -42,8 +43,9 @@ Decomposition greene_dp(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"greene-dp", Kind::Convex, false, true, "n^2*r^2", "== OPT",
-                             "Greene 1983 double dynamic program, as cited in 001 Sec. 1 and slides 003", 400,
-                             greene_dp});
+REGISTER_ALGORITHM({.name = "greene-dp", .kind = Kind::Convex, .optimal = true, .time_bound = "n^2*r^2",
+                    .pieces_bound = "== OPT",
+                    .source = "Greene 1983 double dynamic program, as cited in 001 Sec. 1 and slides 003",
+                    .size_ceiling = 400, .run = greene_dp});
 
 }  // namespace pd

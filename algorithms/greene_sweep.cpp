@@ -15,8 +15,9 @@
 // pieces across the partition. Every diagonal left is essential, which gives the bound. Step (2)-(3)
 // stands in for Greene's per-piece rules; the result differs from `hertel-mehlhorn` only in the order
 // in which diagonals are considered (pieces first, partition last).
-#include "algorithms/essential_diagonals.h"
-#include "algorithms/monotone.h"
+#include "core/registry.h"
+#include "engines/convex/essential_diagonals.h"
+#include "engines/triangulation/monotone.h"
 
 namespace pd {
 namespace {
@@ -41,8 +42,9 @@ Decomposition greene_sweep(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"greene-sweep", Kind::Convex, false, false, "n*log(n)", "<= 4*OPT",
-                             "Greene 1983 as outlined in Rosen slides (003): y-monotone partition, then each piece; per-piece step reconstructed",
-                             1000000, greene_sweep});
+REGISTER_ALGORITHM({.name = "greene-sweep", .kind = Kind::Convex, .time_bound = "n*log(n)",
+                    .pieces_bound = "<= 4*OPT",
+                    .source = "Greene 1983 as outlined in Rosen slides (003): y-monotone partition, then each piece; per-piece step reconstructed",
+                    .run = greene_sweep});
 
 }  // namespace pd

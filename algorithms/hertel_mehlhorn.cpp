@@ -9,8 +9,9 @@
 // vertices allowed. Output: diagonals only, no Steiner points; every diagonal left is essential, so at
 // most 2r + 1 pieces, at most 4 OPT. The O(n) removal, with its half-edge lists built by counting
 // sorts, is in essential_diagonals.h.
-#include "algorithms/essential_diagonals.h"
-#include "algorithms/monotone.h"
+#include "core/registry.h"
+#include "engines/convex/essential_diagonals.h"
+#include "engines/triangulation/monotone.h"
 
 namespace pd {
 namespace {
@@ -30,8 +31,9 @@ Decomposition hertel_mehlhorn(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"hertel-mehlhorn", Kind::Convex, false, false, "n*log(n)", "<= 4*OPT",
-                             "Hertel-Mehlhorn via Keil-Snoeyink (001) Sec. 2 and slides (003); O(n) after the monotone triangulation",
-                             1000000, hertel_mehlhorn});
+REGISTER_ALGORITHM({.name = "hertel-mehlhorn", .kind = Kind::Convex, .time_bound = "n*log(n)",
+                    .pieces_bound = "<= 4*OPT",
+                    .source = "Hertel-Mehlhorn via Keil-Snoeyink (001) Sec. 2 and slides (003); O(n) after the monotone triangulation",
+                    .run = hertel_mehlhorn});
 
 }  // namespace pd

@@ -11,7 +11,8 @@
 // Observation 1). Nothing is popped, so each TypeA/TypeB call costs O(log) instead of O(1) amortised:
 // this is the log factor that Keil & Snoeyink remove with stacks. Deviation: the two cases
 // narrowest_pairs.h adds for collinear vertices.
-#include "algorithms/narrowest_pairs.h"
+#include "core/registry.h"
+#include "engines/keil_snoeyink/narrowest_pairs.h"
 
 namespace pd {
 namespace {
@@ -61,7 +62,8 @@ Decomposition keil(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"keil", Kind::Convex, false, true, "n*r^2*log(r)", "== OPT",
-                             "Keil 1985 as in Keil & Snoeyink (001) Sec. 3", 2000, keil});
+REGISTER_ALGORITHM({.name = "keil", .kind = Kind::Convex, .optimal = true, .time_bound = "n*r^2*log(r)",
+                    .pieces_bound = "== OPT", .source = "Keil 1985 as in Keil & Snoeyink (001) Sec. 3",
+                    .size_ceiling = 2000, .run = keil});
 
 }  // namespace pd

@@ -12,8 +12,9 @@
 // equal lengths, merging of radicals with rational ratios, and MPFR evaluation of what remains, which
 // is then known not to be zero). The terms of a total are recovered from the chain and the stored
 // pieces when the intervals overlap.
-#include "algorithms/convex_chains.h"
-#include "algorithms/exact_ink.h"
+#include "core/registry.h"
+#include "engines/convex/convex_chains.h"
+#include "engines/convex/exact_ink.h"
 
 namespace pd {
 namespace {
@@ -62,7 +63,9 @@ Decomposition min_ink(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"min-ink", Kind::Convex, false, false, "n^2*r^2", "min ink",
-                             "Keil & Snoeyink (001) Sec. 1 (minimum ink, Greene's double program)", 400, min_ink});
+REGISTER_ALGORITHM({.name = "min-ink", .kind = Kind::Convex, .time_bound = "n^2*r^2",
+                    .pieces_bound = "min ink",
+                    .source = "Keil & Snoeyink (001) Sec. 1 (minimum ink, Greene's double program)",
+                    .size_ceiling = 400, .run = min_ink});
 
 }  // namespace pd

@@ -118,7 +118,8 @@
 // rest after all blocks), so that trapezoids made by neighbouring edges of the polygon lie near one
 // another: at n = 10^6 (random, r = n/4, seed 1, 5 interleaved rounds) medians of 1.35-1.38 s against
 // 1.37 s for the one array, within the noise.
-#include "algorithms/monotone.h"
+#include "core/registry.h"
+#include "engines/triangulation/monotone.h"
 
 #include <algorithm>
 #include <array>
@@ -747,8 +748,9 @@ Decomposition seidel(const Polygon& p, Counters& counters) {
 
 }  // namespace
 
-REGISTER_ALGORITHM(Algorithm{"seidel", Kind::Triangulation, false, false, "n*log*(n)", "== n-2",
-                             "Seidel 1991, randomized trapezoidation + monotone triangulation (slides 003 table)",
-                             1000000, seidel});
+REGISTER_ALGORITHM({.name = "seidel", .kind = Kind::Triangulation, .time_bound = "n*log*(n)",
+                    .pieces_bound = "== n-2",
+                    .source = "Seidel 1991, randomized trapezoidation + monotone triangulation (slides 003 table)",
+                    .run = seidel});
 
 }  // namespace pd

@@ -1,6 +1,6 @@
 """Claimed bounds from the registry, as functions.
 
-Time bounds ("n*r^2", "n+min(n*r^2,r^4)", "n*log*(n)", ...) use the grammar of harness/bound_expr.h:
+Time bounds ("n*r^2", "n+min(n*r^2,r^4)", "n*log*(n)", ...) use the grammar of core/bound_expr.h:
 numbers, n, r, + - * / ^, parentheses, log(x), log^k(x), log*(x), min(...), max(...), sqrt(x). In
 cost mode, as in the harness, every factor is kept at least 1 (n >= 2, r >= 1, log2 >= 1), because a
 cost is compared as a ratio.

@@ -9,6 +9,16 @@
 
 namespace pd {
 
+const char* kind_name(Kind k) {
+  switch (k) {
+    case Kind::Triangulation: return "triangulation";
+    case Kind::Partition: return "partition";
+    case Kind::Convex: return "convex";
+    case Kind::Cut: return "cut";
+  }
+  return "?";
+}
+
 VertexId Decomposition::add_steiner(const QPoint& p, std::int64_t boundary_edge) {
   steiner.push_back({p, boundary_edge});
   return static_cast<VertexId>(steiner.size() - 1);  // offset by n at the caller

@@ -14,11 +14,20 @@
 #include "core/polygon.h"
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace pd {
+
+// What an algorithm makes: the validator checks its pieces against the kind.
+enum class Kind { Triangulation, Partition, Convex, Cut };
+const char* kind_name(Kind k);
+
+// An algorithm's own operation counts. Algorithms count in local integers inside hot loops and store
+// the totals here once, at the end.
+using Counters = std::map<std::string, std::int64_t>;
 
 using VertexId = std::uint32_t;
 constexpr std::int64_t kInterior = -1;

@@ -8,7 +8,7 @@
 
 #include "core/decomposition.h"
 #include "core/polygon.h"
-#include "core/registry.h"
+#include "core/decomposition.h"
 #include "core/validate.h"
 
 #include <optional>

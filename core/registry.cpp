@@ -1,41 +1,17 @@
 #include "core/registry.h"
 
-#include <algorithm>
-
 namespace pd {
-namespace {
 
-std::vector<Algorithm>& registry() {
-  static std::vector<Algorithm> all;
-  return all;
-}
-
-}  // namespace
-
-const char* kind_name(Kind k) {
-  switch (k) {
-    case Kind::Triangulation: return "triangulation";
-    case Kind::Partition: return "partition";
-    case Kind::Convex: return "convex";
-    case Kind::Cut: return "cut";
+std::optional<std::string> refusal(const Algorithm& a, const Polygon& p) {
+  if (a.accepts.convex_only && p.reflex_count() > 0) {
+    return a.name + " takes only convex polygons; this one has " + std::to_string(p.reflex_count()) +
+           " reflex vertices";
   }
-  return "?";
-}
-
-const std::vector<Algorithm>& algorithms() { return registry(); }
-
-const Algorithm* find_algorithm(const std::string& name) {
-  for (const Algorithm& a : registry())
-    if (a.name == name) return &a;
-  return nullptr;
-}
-
-bool register_algorithm(Algorithm a) {
-  auto& all = registry();
-  auto at = std::lower_bound(all.begin(), all.end(), a.name,
-                             [](const Algorithm& x, const std::string& name) { return x.name < name; });
-  all.insert(at, std::move(a));
-  return true;
+  if (a.accepts.max_vertices != 0 && p.size() > a.accepts.max_vertices) {
+    return a.name + " takes at most " + std::to_string(a.accepts.max_vertices) + " vertices; this polygon has " +
+           std::to_string(p.size());
+  }
+  return std::nullopt;
 }
 
 }  // namespace pd

@@ -11,7 +11,7 @@
 
 #include "core/decomposition.h"
 #include "core/polygon.h"
-#include "core/registry.h"
+#include "core/decomposition.h"
 
 #include <string>
 #include <vector>

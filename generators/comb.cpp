@@ -24,9 +24,7 @@ using gen::Vec;
 
 std::size_t max_reflex(std::size_t n) { return n < 3 ? 0 : 2 * (n - 3) / 3; }
 
-std::optional<std::string> comb_infeasible(std::size_t n, std::size_t r) {
-  if (n < 3) return "n must be at least 3";
-  if (n > gen::kMaxVertices) return "n must be at most 2000000";
+std::optional<std::string> comb_r_infeasible(std::size_t n, std::size_t r) {
   if (r > max_reflex(n)) return "r must be at most 2(n-3)/3 = " + std::to_string(max_reflex(n));
   return std::nullopt;
 }
@@ -90,20 +88,16 @@ std::vector<Point> make_comb(std::size_t n, std::size_t r, std::uint64_t seed) {
   return gen::centred_points(vertices);
 }
 
-Family comb_family() {
-  Family f;
-  f.name = "comb";
-  f.shape = "a spine with steep teeth; r counts the corners at the bottoms of the gaps";
-  f.range = "3 <= n <= 2000000, 0 <= r <= 2(n-3)/3";
-  f.controls_r = true;
-  f.infeasible = comb_infeasible;
-  f.default_reflex = [](std::size_t n) { return n < 4 ? std::size_t{0} : 2 * (n / 4) - 2; };
-  f.make = make_comb;
-  return f;
-}
-
 }  // namespace
 
-REGISTER_FAMILY(comb_family());
+REGISTER_FAMILY({.name = "comb",
+                 .shape = "a spine with steep teeth; r counts the corners at the bottoms of the gaps",
+                 .min_n = 3,
+                 .max_n = gen::kMaxVertices,
+                 .r_range = "0 <= r <= 2(n-3)/3",
+                 .controls_r = true,
+                 .r_infeasible = comb_r_infeasible,
+                 .default_reflex = [](std::size_t n) { return n < 4 ? std::size_t{0} : 2 * (n / 4) - 2; },
+                 .make = make_comb});
 
 }  // namespace pd

@@ -16,9 +16,7 @@
 namespace pd {
 namespace {
 
-std::optional<std::string> convex_infeasible(std::size_t n, std::size_t r) {
-  if (n < 3) return "n must be at least 3";
-  if (n > gen::kMaxVertices) return "n must be at most 2000000";
+std::optional<std::string> convex_r_infeasible(std::size_t , std::size_t r) {
   if (r != 0) return "a convex polygon has r = 0";
   return std::nullopt;
 }
@@ -30,20 +28,16 @@ std::vector<Point> make_convex(std::size_t n, std::size_t, std::uint64_t seed) {
   return gen::centred_points(vertices);
 }
 
-Family convex_family() {
-  Family f;
-  f.name = "convex";
-  f.shape = "a strictly convex lattice polygon whose edges are the n shortest primitive vectors";
-  f.range = "3 <= n <= 2000000, r = 0";
-  f.controls_r = false;
-  f.infeasible = convex_infeasible;
-  f.default_reflex = [](std::size_t) { return std::size_t{0}; };
-  f.make = make_convex;
-  return f;
-}
-
 }  // namespace
 
-REGISTER_FAMILY(convex_family());
+REGISTER_FAMILY({.name = "convex",
+                 .shape = "a strictly convex lattice polygon whose edges are the n shortest primitive vectors",
+                 .min_n = 3,
+                 .max_n = gen::kMaxVertices,
+                 .r_range = "r = 0",
+                 .controls_r = false,
+                 .r_infeasible = convex_r_infeasible,
+                 .default_reflex = [](std::size_t) { return std::size_t{0}; },
+                 .make = make_convex});
 
 }  // namespace pd

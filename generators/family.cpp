@@ -8,25 +8,6 @@ namespace pd {
 
 namespace {
 
-// Function-local so that registrations from other translation units' static initialisers find it
-// constructed.
-std::vector<Family>& registry() {
-  static std::vector<Family> all;
-  return all;
-}
-
-std::vector<Family>::iterator position_of(const std::string& name) {
-  auto& all = registry();
-  return std::lower_bound(all.begin(), all.end(), name,
-                          [](const Family& f, const std::string& key) { return f.name < key; });
-}
-
-std::string family_names() {
-  std::string names;
-  for (const Family& f : registry()) names += (names.empty() ? "" : ", ") + f.name;
-  return names;
-}
-
 // A family's output must be what family.h promises; a violation is a bug in the family.
 void check_output(const Family& f, std::size_t n, const std::vector<Point>& polygon) {
   if (polygon.size() != n) {
@@ -43,28 +24,30 @@ void check_output(const Family& f, std::size_t n, const std::vector<Point>& poly
 
 }  // namespace
 
-const std::vector<Family>& families() { return registry(); }
-
-const Family* find_family(const std::string& name) {
-  const auto it = position_of(name);
-  return it != registry().end() && it->name == name ? &*it : nullptr;
+std::string Family::range() const {
+  return std::to_string(min_n) + " <= n <= " + std::to_string(max_n) + ", " + r_range;
 }
 
-bool register_family(Family f) {
-  const auto it = position_of(f.name);
-  if (it != registry().end() && it->name == f.name) return false;
-  registry().insert(it, std::move(f));
-  return true;
+std::optional<std::string> Family::infeasible(std::size_t n, std::size_t r) const {
+  if (n < min_n) return "n must be at least " + std::to_string(min_n);
+  if (n > max_n) return "n must be at most " + std::to_string(max_n);
+  return r_infeasible(n, r);
 }
+
+const std::vector<Family>& families() { return NamedRegistry<Family>::all(); }
+
+const Family* find_family(const std::string& name) { return NamedRegistry<Family>::find(name); }
+
+bool register_family(Family f) { return NamedRegistry<Family>::add(std::move(f)); }
 
 std::vector<Point> generate(const std::string& family, std::size_t n, std::optional<std::size_t> r,
                             std::uint64_t seed) {
   const Family* f = find_family(family);
-  if (f == nullptr) throw std::invalid_argument("unknown family " + family + "; families: " + family_names());
+  if (f == nullptr) throw std::invalid_argument("unknown family " + family + "; families: " + NamedRegistry<Family>::names());
   const std::size_t reflex = r ? *r : f->default_reflex(n);
   if (f->infeasible(n, reflex)) {
     throw GeneratorError("family " + f->name + " cannot make n=" + std::to_string(n) +
-                         ", r=" + std::to_string(reflex) + ": feasible " + f->range);
+                         ", r=" + std::to_string(reflex) + ": feasible " + f->range());
   }
   std::vector<Point> polygon = f->make(n, reflex, seed);
   check_output(*f, n, polygon);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/geometry.h"
+#include "core/named_registry.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -26,14 +27,21 @@ class GeneratorError : public std::invalid_argument {
 
 struct Family {
   std::string name;
-  std::string shape;     // one sentence: what the polygons look like
-  std::string range;     // the feasible (n, r), in words, e.g. "n >= 4, 0 <= r <= n-3"
-  bool controls_r;       // whether r can be chosen independently of n
-  // Why (n, r) cannot be realised, or nothing when it can.
-  std::function<std::optional<std::string>(std::size_t n, std::size_t r)> infeasible;
+  std::string shape;    // one sentence: what the polygons look like
+  std::size_t min_n;    // the feasible n: min_n <= n <= max_n
+  std::size_t max_n;
+  std::string r_range;  // the feasible r at a feasible n, in words, e.g. "0 <= r <= 2(n-3)/3"
+  bool controls_r;      // whether r can be chosen independently of n
+  // Why r cannot be realised at an n in range, or nothing when it can.
+  std::function<std::optional<std::string>(std::size_t n, std::size_t r)> r_infeasible;
   // The r used when none is asked for (e.g. n/4 for random, 0 for convex).
   std::function<std::size_t(std::size_t n)> default_reflex;
   std::function<std::vector<Point>(std::size_t n, std::size_t r, std::uint64_t seed)> make;
+
+  // The feasible (n, r), in words, e.g. "3 <= n <= 2000000, 0 <= r <= 2(n-3)/3".
+  std::string range() const;
+  // Why (n, r) cannot be realised, or nothing when it can.
+  std::optional<std::string> infeasible(std::size_t n, std::size_t r) const;
 };
 
 const std::vector<Family>& families();  // sorted by name
@@ -49,7 +57,3 @@ std::vector<Point> generate(const std::string& family, std::size_t n, std::optio
 
 #define REGISTER_FAMILY(...) \
   static const bool PD_CONCAT(pd_family_, __COUNTER__) = ::pd::register_family(__VA_ARGS__)
-#ifndef PD_CONCAT
-#define PD_CONCAT_INNER(a, b) a##b
-#define PD_CONCAT(a, b) PD_CONCAT_INNER(a, b)
-#endif

@@ -25,9 +25,7 @@ constexpr std::int64_t kScale = 4;
 
 std::size_t max_notches(std::size_t n) { return std::min(n / 2, n - 4); }
 
-std::optional<std::string> few_notches_infeasible(std::size_t n, std::size_t r) {
-  if (n < 4) return "n must be at least 4";
-  if (n > gen::kMaxVertices) return "n must be at most 2000000";
+std::optional<std::string> few_notches_r_infeasible(std::size_t n, std::size_t r) {
   if (r > max_notches(n)) return "r must be at most min(n/2, n-4) = " + std::to_string(max_notches(n));
   return std::nullopt;
 }
@@ -69,22 +67,18 @@ std::vector<Point> make_few_notches(std::size_t n, std::size_t r, std::uint64_t 
   return gen::centred_points(vertices);
 }
 
-Family few_notches_family() {
-  Family f;
-  f.name = "few-notches";
-  f.shape = "a large convex lattice polygon with r shallow single-vertex notches in random edges";
-  f.range = "4 <= n <= 2000000, 0 <= r <= min(n/2, n-4)";
-  f.controls_r = true;
-  f.infeasible = few_notches_infeasible;
-  f.default_reflex = [](std::size_t n) {
-    return n < 4 ? std::size_t{0} : std::min<std::size_t>(16, max_notches(n));
-  };
-  f.make = make_few_notches;
-  return f;
-}
-
 }  // namespace
 
-REGISTER_FAMILY(few_notches_family());
+REGISTER_FAMILY({.name = "few-notches",
+                 .shape = "a large convex lattice polygon with r shallow single-vertex notches in random edges",
+                 .min_n = 4,
+                 .max_n = gen::kMaxVertices,
+                 .r_range = "0 <= r <= min(n/2, n-4)",
+                 .controls_r = true,
+                 .r_infeasible = few_notches_r_infeasible,
+                 .default_reflex = [](std::size_t n) {
+                   return n < 4 ? std::size_t{0} : std::min<std::size_t>(16, max_notches(n));
+                 },
+                 .make = make_few_notches});
 
 }  // namespace pd

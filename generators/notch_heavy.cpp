@@ -29,9 +29,7 @@ constexpr std::size_t kDentChoices = 8;
 
 std::size_t min_reflex(std::size_t n) { return (n - 2) / 2; }
 
-std::optional<std::string> notch_heavy_infeasible(std::size_t n, std::size_t r) {
-  if (n < 3) return "n must be at least 3";
-  if (n > gen::kMaxVertices) return "n must be at most 2000000";
+std::optional<std::string> notch_heavy_r_infeasible(std::size_t n, std::size_t r) {
   if (r > n - 3) return "r must be at most n-3 = " + std::to_string(n - 3);
   if (r < min_reflex(n)) return "r must be at least (n-2)/2 = " + std::to_string(min_reflex(n));
   return std::nullopt;
@@ -108,20 +106,16 @@ std::vector<Point> make_notch_heavy(std::size_t n, std::size_t r, std::uint64_t 
   return gen::centred_points(vertices);
 }
 
-Family notch_heavy_family() {
-  Family f;
-  f.name = "notch-heavy";
-  f.shape = "a triangle with caved-in sides: up to n-3 reflex vertices, dents add convex ones";
-  f.range = "3 <= n <= 2000000, (n-2)/2 <= r <= n-3";
-  f.controls_r = true;
-  f.infeasible = notch_heavy_infeasible;
-  f.default_reflex = [](std::size_t n) { return n < 3 ? std::size_t{0} : n - 3; };
-  f.make = make_notch_heavy;
-  return f;
-}
-
 }  // namespace
 
-REGISTER_FAMILY(notch_heavy_family());
+REGISTER_FAMILY({.name = "notch-heavy",
+                 .shape = "a triangle with caved-in sides: up to n-3 reflex vertices, dents add convex ones",
+                 .min_n = 3,
+                 .max_n = gen::kMaxVertices,
+                 .r_range = "(n-2)/2 <= r <= n-3",
+                 .controls_r = true,
+                 .r_infeasible = notch_heavy_r_infeasible,
+                 .default_reflex = [](std::size_t n) { return n < 3 ? std::size_t{0} : n - 3; },
+                 .make = make_notch_heavy});
 
 }  // namespace pd

@@ -30,9 +30,7 @@ using gen::Vec;
 
 std::size_t max_reflex(std::size_t n) { return n < 4 ? 0 : n - 4; }
 
-std::optional<std::string> random_infeasible(std::size_t n, std::size_t r) {
-  if (n < 3) return "n must be at least 3";
-  if (n > gen::kMaxVertices) return "n must be at most 2000000";
+std::optional<std::string> random_r_infeasible(std::size_t n, std::size_t r) {
   if (r > max_reflex(n)) return "r must be at most max(0, n-4) = " + std::to_string(max_reflex(n));
   return std::nullopt;
 }
@@ -160,20 +158,16 @@ std::vector<Point> make_random(std::size_t n, std::size_t r, std::uint64_t seed)
   return gen::centred_points(two ? two_chains(n, r, rng) : lidded(n, r, rng));
 }
 
-Family random_family() {
-  Family f;
-  f.name = "random";
-  f.shape = "a random x-monotone polygon with exactly r reflex vertices at random places";
-  f.range = "3 <= n <= 2000000, 0 <= r <= max(0, n-4)";
-  f.controls_r = true;
-  f.infeasible = random_infeasible;
-  f.default_reflex = [](std::size_t n) { return std::min(n / 4, max_reflex(n)); };
-  f.make = make_random;
-  return f;
-}
-
 }  // namespace
 
-REGISTER_FAMILY(random_family());
+REGISTER_FAMILY({.name = "random",
+                 .shape = "a random x-monotone polygon with exactly r reflex vertices at random places",
+                 .min_n = 3,
+                 .max_n = gen::kMaxVertices,
+                 .r_range = "0 <= r <= max(0, n-4)",
+                 .controls_r = true,
+                 .r_infeasible = random_r_infeasible,
+                 .default_reflex = [](std::size_t n) { return std::min(n / 4, max_reflex(n)); },
+                 .make = make_random});
 
 }  // namespace pd

@@ -23,9 +23,7 @@ using gen::Vec;
 
 std::size_t max_turns(std::size_t n) { return n / 2 - 2; }
 
-std::optional<std::string> spiral_infeasible(std::size_t n, std::size_t r) {
-  if (n < 6) return "n must be at least 6";
-  if (n > gen::kMaxVertices) return "n must be at most 2000000";
+std::optional<std::string> spiral_r_infeasible(std::size_t n, std::size_t r) {
   if (r < 1) return "r must be at least 1";
   if (r > max_turns(n)) return "r must be at most n/2-2 = " + std::to_string(max_turns(n));
   return std::nullopt;
@@ -94,20 +92,16 @@ std::vector<Point> make_spiral(std::size_t n, std::size_t r, std::uint64_t seed)
   return gen::centred_points(vertices);
 }
 
-Family spiral_family() {
-  Family f;
-  f.name = "spiral";
-  f.shape = "a square spiral strip with r right-angle turns; its inner side is all the reflex vertices";
-  f.range = "6 <= n <= 2000000, 1 <= r <= n/2-2";
-  f.controls_r = true;
-  f.infeasible = spiral_infeasible;
-  f.default_reflex = [](std::size_t n) { return n < 6 ? std::size_t{1} : max_turns(n); };
-  f.make = make_spiral;
-  return f;
-}
-
 }  // namespace
 
-REGISTER_FAMILY(spiral_family());
+REGISTER_FAMILY({.name = "spiral",
+                 .shape = "a square spiral strip with r right-angle turns; its inner side is all the reflex vertices",
+                 .min_n = 6,
+                 .max_n = gen::kMaxVertices,
+                 .r_range = "1 <= r <= n/2-2",
+                 .controls_r = true,
+                 .r_infeasible = spiral_r_infeasible,
+                 .default_reflex = [](std::size_t n) { return n < 6 ? std::size_t{1} : max_turns(n); },
+                 .make = make_spiral});
 
 }  // namespace pd

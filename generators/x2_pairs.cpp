@@ -38,9 +38,7 @@ constexpr std::int64_t kHeight = 64, kDepth = 16, kSpacing = 32;
 
 std::size_t min_vertices(std::size_t r) { return 3 * r + 4; }
 
-std::optional<std::string> x2_pairs_infeasible(std::size_t n, std::size_t r) {
-  if (n < 10) return "n must be at least 10";
-  if (n > kMaxPairsVertices) return "n must be at most 1000000";
+std::optional<std::string> x2_pairs_r_infeasible(std::size_t n, std::size_t r) {
   if (r == 0 || r % 2 != 0) return "r must be a positive even number";
   if (n < min_vertices(r)) return "r = 2m needs n >= 3r+4";
   return std::nullopt;
@@ -66,20 +64,16 @@ std::vector<Point> make_x2_pairs(std::size_t n, std::size_t r, std::uint64_t see
   return gen::centred_points(gen::padded_outline(strip(r / 2), n, rng));
 }
 
-Family x2_pairs_family() {
-  Family f;
-  f.name = "x2-pairs";
-  f.shape = "a strip with its notches in facing pairs, each pair resolved by the segment joining its tips";
-  f.range = "10 <= n <= 1000000, r = 2m with m >= 1, n >= 3r+4";
-  f.controls_r = true;
-  f.infeasible = x2_pairs_infeasible;
-  f.default_reflex = [](std::size_t n) { return 2 * std::max<std::size_t>(1, n < 4 ? 0 : (n - 4) / 6); };
-  f.make = make_x2_pairs;
-  return f;
-}
-
 }  // namespace
 
-REGISTER_FAMILY(x2_pairs_family());
+REGISTER_FAMILY({.name = "x2-pairs",
+                 .shape = "a strip with its notches in facing pairs, each pair resolved by the segment joining its tips",
+                 .min_n = 10,
+                 .max_n = kMaxPairsVertices,
+                 .r_range = "r = 2m with m >= 1, n >= 3r+4",
+                 .controls_r = true,
+                 .r_infeasible = x2_pairs_r_infeasible,
+                 .default_reflex = [](std::size_t n) { return 2 * std::max<std::size_t>(1, n < 4 ? 0 : (n - 4) / 6); },
+                 .make = make_x2_pairs});
 
 }  // namespace pd

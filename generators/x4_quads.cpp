@@ -75,9 +75,7 @@ constexpr std::int64_t kHeight = 60, kGroupWidth = 80;
 
 std::size_t min_vertices(std::size_t r) { return 3 * r + 4; }
 
-std::optional<std::string> x4_quads_infeasible(std::size_t n, std::size_t r) {
-  if (n < 16) return "n must be at least 16";
-  if (n > kMaxQuadsVertices) return "n must be at most 1000000";
+std::optional<std::string> x4_quads_r_infeasible(std::size_t n, std::size_t r) {
   if (r == 0 || r % 4 != 0) return "r must be a positive multiple of 4";
   if (n < min_vertices(r)) return "r = 4m needs n >= 3r+4";
   return std::nullopt;
@@ -113,20 +111,16 @@ std::vector<Point> make_x4_quads(std::size_t n, std::size_t r, std::uint64_t see
   return gen::centred_points(gen::padded_outline(strip(r / 4), n, rng));
 }
 
-Family x4_quads_family() {
-  Family f;
-  f.name = "x4-quads";
-  f.shape = "a strip of groups of four slits, each group resolved by one tree with two Steiner points";
-  f.range = "16 <= n <= 1000000, r = 4m with m >= 1, n >= 3r+4";
-  f.controls_r = true;
-  f.infeasible = x4_quads_infeasible;
-  f.default_reflex = [](std::size_t n) { return 4 * std::max<std::size_t>(1, n < 4 ? 0 : (n - 4) / 12); };
-  f.make = make_x4_quads;
-  return f;
-}
-
 }  // namespace
 
-REGISTER_FAMILY(x4_quads_family());
+REGISTER_FAMILY({.name = "x4-quads",
+                 .shape = "a strip of groups of four slits, each group resolved by one tree with two Steiner points",
+                 .min_n = 16,
+                 .max_n = kMaxQuadsVertices,
+                 .r_range = "r = 4m with m >= 1, n >= 3r+4",
+                 .controls_r = true,
+                 .r_infeasible = x4_quads_r_infeasible,
+                 .default_reflex = [](std::size_t n) { return 4 * std::max<std::size_t>(1, n < 4 ? 0 : (n - 4) / 12); },
+                 .make = make_x4_quads});
 
 }  // namespace pd

@@ -38,9 +38,7 @@ constexpr std::size_t kMaxXVertices = 1'000'000;
 
 std::size_t min_vertices(std::size_t triples) { return triples == 1 ? 12 : 9 * triples + 4; }
 
-std::optional<std::string> x_pattern_infeasible(std::size_t n, std::size_t r) {
-  if (n < 12) return "n must be at least 12";
-  if (n > kMaxXVertices) return "n must be at most 1000000";
+std::optional<std::string> x_pattern_r_infeasible(std::size_t n, std::size_t r) {
   if (r == 0 || r % 3 != 0) return "r must be a positive multiple of 3";
   if (n < min_vertices(r / 3)) return "r = 3m needs n >= 9m+4 for m >= 2";
   return std::nullopt;
@@ -107,20 +105,16 @@ std::vector<Point> make_x_pattern(std::size_t n, std::size_t r, std::uint64_t se
   return gen::centred_points(gen::padded_outline(r == 3 ? triangle() : strip(r / 3), n, rng));
 }
 
-Family x_pattern_family() {
-  Family f;
-  f.name = "x-pattern";
-  f.shape = "thin slits in triples aimed at common points: a slit triangle (r = 3) or a strip of triples";
-  f.range = "12 <= n <= 1000000, r = 3m with m >= 1, n >= 9m+4 when m >= 2";
-  f.controls_r = true;
-  f.infeasible = x_pattern_infeasible;
-  f.default_reflex = [](std::size_t n) { return 3 * std::max<std::size_t>(1, n < 4 ? 0 : (n - 4) / 9); };
-  f.make = make_x_pattern;
-  return f;
-}
-
 }  // namespace
 
-REGISTER_FAMILY(x_pattern_family());
+REGISTER_FAMILY({.name = "x-pattern",
+                 .shape = "thin slits in triples aimed at common points: a slit triangle (r = 3) or a strip of triples",
+                 .min_n = 12,
+                 .max_n = kMaxXVertices,
+                 .r_range = "r = 3m with m >= 1, n >= 9m+4 when m >= 2",
+                 .controls_r = true,
+                 .r_infeasible = x_pattern_r_infeasible,
+                 .default_reflex = [](std::size_t n) { return 3 * std::max<std::size_t>(1, n < 4 ? 0 : (n - 4) / 9); },
+                 .make = make_x_pattern});
 
 }  // namespace pd

@@ -122,6 +122,10 @@ void SweepRunner::run_key(benchmark::State& state, const SweepKey& key) {
     state.SkipWithError(cached.error.c_str());
     return;
   }
+  if (const auto why = refusal(*key.algorithm, *cached.polygon)) {
+    state.SkipWithError(("skipped (input): " + *why).c_str());
+    return;
+  }
   begin(key);
   // Google Benchmark's first call of a key runs one iteration: its result is the one validated and its
   // operation counts are the ones reported, so `ops` is not cleared inside the timed loop.

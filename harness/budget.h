@@ -11,7 +11,7 @@
 #pragma once
 
 #include "core/registry.h"
-#include "harness/bound_expr.h"
+#include "core/bound_expr.h"
 
 #include <cstddef>
 #include <map>

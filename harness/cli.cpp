@@ -3,7 +3,7 @@
 // Exit status: 0 success, 2 bad usage, 3 bad polygon, 4 an algorithm failed (or `run --max-seconds`
 // stopped it). Every failure prints one line on stderr beginning "error:" and nothing on stdout; output
 // is assembled completely before any of it is written, so a failure never leaves partial output.
-#include "algorithms/polygon_cutting.h"
+#include "engines/cutting/polygon_cutting.h"
 #include "core/io.h"
 #include "core/json.h"
 #include "core/registry.h"
@@ -44,7 +44,7 @@ struct Exit {
 [[noreturn]] void usage(const std::string& why) { throw Exit{kUsage, why}; }
 
 const char* kUsageText =
-    "usage: polydecomp list [--json]\n"
+    "usage: polydecomp list [--json | --markdown]\n"
     "       polydecomp generate --family F --n N [--reflex R] [--seed S] [--format txt|wkt|geojson] [-o FILE]\n"
     "       polydecomp run --algorithm A --input FILE [--json] [--svg FILE] [--no-validate] [--max-seconds S]\n"
     "       polydecomp cut --input FILE [--weights reflex|all|FILE] [--vertical] [--json]\n";
@@ -77,31 +77,52 @@ void emit(const std::string& text, const std::string& path) {
 
 std::string json_bool(bool b) { return b ? "true" : "false"; }
 
+std::string list_json() {
+  std::string out = "[";
+  for (const Algorithm& a : algorithms()) {
+    const std::string max_vertices = a.accepts.max_vertices ? std::to_string(a.accepts.max_vertices) : "null";
+    out += std::string(out.size() > 1 ? ",\n " : "") + "{\"name\": " + json_quote(a.name) +
+           ", \"kind\": " + json_quote(kind_name(a.kind)) + ", \"steiner\": " + json_bool(a.steiner) +
+           ", \"optimal\": " + json_bool(a.optimal) + ", \"time_bound\": " + json_quote(a.time_bound) +
+           ", \"pieces_bound\": " + json_quote(a.pieces_bound) + ", \"source\": " + json_quote(a.source) +
+           ", \"peer\": " + (is_peer(a) ? json_quote(a.peer) : "null") + ", \"holes\": " + json_bool(a.accepts.holes) +
+           ", \"accepts\": {\"holes\": " + json_bool(a.accepts.holes) +
+           ", \"convex_only\": " + json_bool(a.accepts.convex_only) + ", \"max_vertices\": " + max_vertices +
+           "}, \"size_ceiling\": " + std::to_string(a.size_ceiling) + "}";
+  }
+  return out + "]\n";
+}
+
+// The README's algorithm table.
+std::string list_markdown() {
+  std::string out =
+      "| name | kind | Steiner | optimal | time | pieces | source | peer |\n"
+      "|---|---|---|---|---|---|---|---|\n";
+  for (const Algorithm& a : algorithms()) {
+    out += "| `" + a.name + "` | " + kind_name(a.kind) + " | " + (a.steiner ? "yes" : "no") + " | " +
+           (a.optimal ? "yes" : "no") + " | O(" + a.time_bound + ") | " + a.pieces_bound + " | " + a.source + " | " +
+           (is_peer(a) ? a.peer : "") + " |\n";
+  }
+  return out;
+}
+
+std::string list_text() {
+  std::string out;
+  char line[512];
+  for (const Algorithm& a : algorithms()) {
+    std::snprintf(line, sizeof line, "%-22s %-13s %-10s %-8s %-18s %-12s %s\n", a.name.c_str(), kind_name(a.kind),
+                  a.steiner ? "steiner" : "diagonals", a.optimal ? "optimal" : "-", ("O(" + a.time_bound + ")").c_str(),
+                  a.pieces_bound.c_str(), a.source.c_str());
+    out += line;
+  }
+  return out;
+}
+
 int cmd_list(const std::vector<std::string>& args) {
   po::options_description opts;
-  opts.add_options()("json", "JSON output")("help,h", "help");
+  opts.add_options()("json", "JSON output")("markdown", "a Markdown table")("help,h", "help");
   const auto vm = parse(args, opts);
-  std::string out;
-  if (vm.count("json")) {
-    out = "[";
-    for (const Algorithm& a : algorithms()) {
-      out += std::string(out.size() > 1 ? ",\n " : "") + "{\"name\": " + json_quote(a.name) +
-             ", \"kind\": " + json_quote(kind_name(a.kind)) + ", \"steiner\": " + json_bool(a.steiner) +
-             ", \"optimal\": " + json_bool(a.optimal) + ", \"time_bound\": " + json_quote(a.time_bound) +
-             ", \"pieces_bound\": " + json_quote(a.pieces_bound) + ", \"source\": " + json_quote(a.source) +
-             ", \"size_ceiling\": " + std::to_string(a.size_ceiling) + "}";
-    }
-    out += "]\n";
-  } else {
-    char line[512];
-    for (const Algorithm& a : algorithms()) {
-      std::snprintf(line, sizeof line, "%-22s %-13s %-10s %-8s %-18s %-12s %s\n", a.name.c_str(), kind_name(a.kind),
-                    a.steiner ? "steiner" : "diagonals", a.optimal ? "optimal" : "-", ("O(" + a.time_bound + ")").c_str(),
-                    a.pieces_bound.c_str(), a.source.c_str());
-      out += line;
-    }
-  }
-  emit(out, "");
+  emit(vm.count("json") ? list_json() : vm.count("markdown") ? list_markdown() : list_text(), "");
   return 0;
 }
 
@@ -272,6 +293,7 @@ int cmd_run(const std::vector<std::string>& args) {
   } catch (const PolygonError& e) {
     throw Exit{kBadPolygon, e.what()};
   }
+  if (const auto why = refusal(*algo, *polygon)) throw Exit{kBadPolygon, *why};
   const auto compute = [&] {
     return run_output(*algo, *polygon, vm.count("json") > 0, vm.count("no-validate") == 0, vm.count("svg") > 0);
   };
@@ -372,7 +394,7 @@ std::string vertical_report(const Polygon& p, const std::vector<int>& weights, b
          " C=" + number(cut.C) + " C1=" + number(c1) + " C2=" + number(c2) + "\n";
 }
 
-// The polygon-cutting theorem (algorithms/polygon_cutting.h). A polygon with no fair cut promised (a
+// The polygon-cutting theorem (engines/cutting/polygon_cutting.h). A polygon with no fair cut promised (a
 // triangle, weights totalling 1) is refused with exit status 3, like a bad polygon.
 int cmd_cut(const std::vector<std::string>& args) {
   po::options_description opts;

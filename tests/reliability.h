@@ -12,7 +12,7 @@
 #include "core/io.h"
 #include "core/registry.h"
 #include "core/validate.h"
-#include "harness/bound_expr.h"
+#include "core/bound_expr.h"
 
 #include <optional>
 #include <string>
@@ -20,14 +20,16 @@
 
 namespace pd::reliability {
 
-inline bool is_peer(const Algorithm& a) { return a.name.rfind("cgal-", 0) == 0; }
+// Whether `a` takes p (Algorithm::accepts) and p is under its size ceiling.
+inline bool takes(const Algorithm& a, const Polygon& p) { return !refusal(a, p) && p.size() <= a.size_ceiling; }
 
-// Whether a polygon of n vertices and r notches is within `work` for `a`: under its size ceiling, and
-// its claimed bound in n and r at most `work` (the ceiling alone ignores r: an n*r^2 program on a
-// real-world ring with r = n/2 is cubic).
-inline bool within_work(const Algorithm& a, std::size_t n, std::size_t r, double work) {
+// Whether `a` is given p within `work`: it takes p (Algorithm::accepts), p is under its size ceiling,
+// and its claimed bound in n and r is at most `work` there (the ceiling alone ignores r: an n*r^2
+// program on a real-world ring with r = n/2 is cubic).
+inline bool within_work(const Algorithm& a, const Polygon& p, double work) {
   const auto bound = BoundExpr::parse(a.time_bound);
-  return n <= a.size_ceiling && (!bound || (*bound)(static_cast<double>(n), static_cast<double>(r)) <= work);
+  const auto n = static_cast<double>(p.size()), r = static_cast<double>(p.reflex_count());
+  return takes(a, p) && (!bound || (*bound)(n, r) <= work);
 }
 
 // The polygon in `text`, or nothing when it is refused with a PolygonError. Any other exception
@@ -56,7 +58,7 @@ struct Verdict {
 inline std::vector<Verdict> run_every_algorithm(const Polygon& p, double work) {
   std::vector<Verdict> verdicts;
   for (const Algorithm& a : algorithms()) {
-    if (!within_work(a, p.size(), p.reflex_count(), work)) continue;
+    if (!within_work(a, p, work)) continue;
     Counters counters;
     try {
       const Validation v = validate(p, a.run(p, counters), a.kind, a.steiner);

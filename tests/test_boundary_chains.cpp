@@ -1,8 +1,8 @@
-// Segments against the convex chains of a polygon's boundary (algorithms/boundary_chains.h), against
+// Segments against the convex chains of a polygon's boundary (engines/search/boundary_chains.h), against
 // testing every edge: on every generator family, for segments between vertices (along edges and
 // through collinear vertices on the axis-parallel families), points on edges and points in the
 // bounding box, with and without the edges at a vertex left out.
-#include "algorithms/boundary_chains.h"
+#include "engines/search/boundary_chains.h"
 #include "generators/family.h"
 
 #include <gtest/gtest.h>

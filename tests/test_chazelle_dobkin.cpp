@@ -1,4 +1,4 @@
-// Chazelle-Dobkin's pattern detection (algorithms/chazelle_dobkin_patterns.h) against the definitions:
+// Chazelle-Dobkin's pattern detection (engines/chazelle_dobkin/patterns.h) against the definitions:
 // X2 (Theorem 13) against the brute-force diagonal test and the range cones written out with input
 // predicates; X3 (Theorem 14) by building the pattern, finishing with the naive decomposition and
 // validating the result exactly (a found pattern must save one piece), and, where it reports no
@@ -6,7 +6,7 @@
 // Then the programs (chazelle-dobkin, chazelle-dobkin-n5): valid, between ceil(r/2) + 1 and min(keil-snoeyink, r + 1)
 // pieces, the known optimum of the x-pattern family (2m + 1) and of facing pairs of notches (r/2 + 1),
 // and at least as many patterns as an exhaustive search over compatible X2- and X3-patterns. The
-// geodesics its scans use (algorithms/geodesics.h) against a brute-force shortest-path search. Last,
+// geodesics its scans use (engines/chazelle_dobkin/geodesics.h) against a brute-force shortest-path search. Last,
 // chazelle-dobkin's X4 tables (the scan over loose points) against chazelle-dobkin-n5's search of every
 // pair: the same count on every family, on every rotation (both pairings of the x4-quads groups), on
 // jittered x4-quads with crossing rays and with spikes where only "XY inside P" fails; every X4 of
@@ -14,11 +14,11 @@
 // Lemma 9 check, Theorem 18's claim on samples); the rows E and W themselves, every entry against that
 // brute force given the program's S; every row against walks that test P4 with the segment search; and
 // the counters the time bound rests on.
-#include "algorithms/chazelle_dobkin_patterns.h"
-#include "algorithms/chazelle_dobkin_tables.h"
-#include "algorithms/geodesics.h"
-#include "algorithms/keil_snoeyink.h"
-#include "algorithms/naive.h"
+#include "engines/chazelle_dobkin/patterns.h"
+#include "engines/chazelle_dobkin/tables.h"
+#include "engines/chazelle_dobkin/geodesics.h"
+#include "engines/keil_snoeyink/stacks.h"
+#include "engines/naive/naive.h"
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"
@@ -493,7 +493,7 @@ std::size_t same_count(const Polygon& p, const std::string& where, Counters* cou
   return tables;
 }
 
-// Geodesics (algorithms/geodesics.h) against a brute force that shares no code with them: which pairs of
+// Geodesics (engines/chazelle_dobkin/geodesics.h) against a brute force that shares no code with them: which pairs of
 // points (vertices, and points inside every third edge) see each other in the closed polygon, tested
 // against every edge and vertex, then Dijkstra's shortest paths over those pairs. Every geodesic must
 // join points that see each other, turn at every point it lists between its ends, and be as long as the
@@ -965,7 +965,7 @@ TEST(ChazelleDobkinTables, EveryTipX4HasALooseX4OnTheSameNotches) {
 
 // ---- the rows E and W themselves, entry by entry, against Lemma 9 by brute force ----
 
-// T(g, h; m) as the header of algorithms/chazelle_dobkin_cubic.cpp defines it. S is taken from the program
+// T(g, h; m) as the header of algorithms/chazelle_dobkin.cpp defines it. S is taken from the program
 // rather than recomputed: its counts are checked against chazelle-dobkin-n5's by the tests above, and the
 // rows are checked here given S.
 bool tight(const cd::ProgramCubic& program, int g, int h, int m) {
@@ -1074,7 +1074,7 @@ TEST(ChazelleDobkinTables, RowsHoldExactlyTheLooseX4OfTightInnerNotches) {
 }
 
 // The scans read each query's witness from the places its X sees, found with geodesics (header of
-// algorithms/chazelle_dobkin_cubic.cpp, (7)). It must be the Y where a walk testing every Y in turn with
+// algorithms/chazelle_dobkin.cpp, (7)). It must be the Y where a walk testing every Y in turn with
 // the segment search stops: every entry of every row, inner notch and rays, the same in both on polygons
 // of every family large enough for long passes (and each rotated by a third).
 TEST(ChazelleDobkinTables, GeodesicsFindTheWitnessesOfWalksAlone) {

@@ -3,6 +3,7 @@
 #include "core/io.h"
 #include "core/json.h"
 #include "core/registry.h"
+#include "generators/family.h"
 #include "tests/fixtures.h"
 #include "tests/independent_check.h"
 #include "tests/reliability.h"
@@ -142,8 +143,9 @@ TEST_F(Cli, RunJsonValidAgreesWithTheIndependentCheck) {
   for (const std::string family : {"random", "spiral", "comb", "notch-heavy", "few-notches"}) {
     const fs::path poly = dir_ / (family + ".txt");
     ASSERT_EQ(cli("generate --family " + family + " --n 30 --seed 3 -o " + poly.string()).status, 0);
+    const Polygon p = Polygon::make(generate(family, 30, std::nullopt, 3));
     for (const Algorithm& a : algorithms()) {
-      if (a.size_ceiling < 30) continue;
+      if (!reliability::takes(a, p)) continue;
       const Result r = cli("run --json --algorithm " + a.name + " --input " + poly.string());
       ASSERT_EQ(r.status, 0) << a.name << ": " << r.err;
       const Json j = parse_json(r.out);
@@ -233,15 +235,15 @@ TEST_F(Cli, EveryEarcutFixtureThroughEveryAlgorithm) {
       continue;
     }
     for (const Algorithm& a : algorithms()) {
-      if (!reliability::within_work(a, p->size(), p->reflex_count(), reliability::kTestWork)) continue;
+      if (!reliability::within_work(a, *p, reliability::kTestWork)) continue;
       ++runs;
       const Result r = cli("run --algorithm " + a.name + " --json --max-seconds 300 --input " + path.string());
       const std::string label = a.name + " on " + path.filename().string();
       if (r.status == 0) {
         EXPECT_EQ(r.err, "") << label;
-        EXPECT_TRUE(parse_json(r.out).get("valid")->boolean || reliability::is_peer(a)) << label;
+        EXPECT_TRUE(parse_json(r.out).get("valid")->boolean || is_peer(a)) << label;
       } else {
-        EXPECT_TRUE(reliability::is_peer(a)) << label << ": " << r.err;
+        EXPECT_TRUE(is_peer(a)) << label << ": " << r.err;
         EXPECT_EQ(r.status, 4) << label;
         EXPECT_EQ(r.out, "") << label;
         EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << label;

@@ -3,7 +3,7 @@
 // edge, through collinear vertices, through an earlier Steiner point, onto an unresolved notch), then
 // every generator family: exact validity, exactly r + 1 pieces with degree <= 3 for the naive pair,
 // Theorem 3's pseudo-notch bound, the Hertel-Mehlhorn bound 2r + 1.
-#include "algorithms/naive.h"
+#include "engines/naive/naive.h"
 #include "core/validate.h"
 #include "generators/family.h"
 #include "tests/fixtures.h"

@@ -1,14 +1,15 @@
-// The polygon-cutting theorem (algorithms/polygon_cutting.h) and the two algorithms built on it:
+// The polygon-cutting theorem (engines/cutting/polygon_cutting.h) and the two algorithms built on it:
 // every cut is a true diagonal, judged with exact rationals and none of the project's predicates, and
 // both its parts weigh at most 2C/3; cutting-convex stays under 13/3 of the best optimal count; the
 // work per cut is linear in n (counts, not time); `polydecomp cut` keeps CONTRACT.md.
-#include "algorithms/polygon_cutting.h"
+#include "engines/cutting/polygon_cutting.h"
 #include "core/json.h"
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"
 #include "tests/fixtures.h"
 #include "tests/independent_check.h"
+#include "tests/reliability.h"
 
 #include <gtest/gtest.h>
 
@@ -232,7 +233,7 @@ TEST(FairCut, WorkPerCutIsLinear) {
 std::size_t best_optimal_count(const Polygon& p) {
   std::size_t best = 0;
   for (const Algorithm& a : algorithms()) {
-    if (!a.optimal || a.steiner || a.kind != Kind::Convex || p.size() > a.size_ceiling) continue;
+    if (!a.optimal || a.steiner || a.kind != Kind::Convex || !reliability::takes(a, p)) continue;
     Counters counters;
     const Decomposition d = a.run(p, counters);
     if (!validate(p, d, a.kind, a.steiner).ok) continue;

@@ -184,7 +184,7 @@ TEST(Generators, RegistryListsTheFamiliesSortedByName) {
   EXPECT_FALSE(register_family(*find_family("comb")));
   for (const Family& f : families()) {
     EXPECT_FALSE(f.shape.empty()) << f.name;
-    EXPECT_FALSE(f.range.empty()) << f.name;
+    EXPECT_FALSE(f.range().empty()) << f.name;
   }
   EXPECT_FALSE(find_family("convex")->controls_r);
   EXPECT_TRUE(find_family("random")->controls_r);
@@ -238,7 +238,7 @@ TEST(Generators, InfeasibleThrowsNamingTheRange) {
         } catch (const GeneratorError& e) {
           const std::string what = e.what();
           EXPECT_NE(what.find("feasible"), std::string::npos) << what;
-          EXPECT_NE(what.find(f.range), std::string::npos) << what;
+          EXPECT_NE(what.find(f.range()), std::string::npos) << what;
         }
       }
     }

@@ -2,8 +2,8 @@
 // that is not a peer) against an exhaustive search over sets of non-crossing diagonals on small
 // polygons, against each other on larger ones, and against CGAL's optimal partition where CGAL's
 // result is valid.
-#include "algorithms/exact_ink.h"
-#include "algorithms/keil_snoeyink_reduced.h"
+#include "engines/convex/exact_ink.h"
+#include "engines/keil_snoeyink/reduction.h"
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"
@@ -22,7 +22,6 @@
 namespace pd {
 namespace {
 
-using reliability::is_peer;
 using lattice::lattice_polygon;
 using lattice::notched_rectangle;
 
@@ -110,7 +109,7 @@ TEST(BruteForce, KnowsTheHandMadeAnswers) {
 
 void expect_count(const Polygon& p, std::size_t best, const std::string& label) {
   for (const Algorithm& a : optimal_programs()) {
-    if (p.size() > a.size_ceiling) continue;
+    if (!reliability::takes(a, p)) continue;
     EXPECT_EQ(valid_pieces(a, p, label), best) << a.name << " on " << label;
   }
 }
@@ -228,7 +227,7 @@ TEST(OptimalPrograms, AgreeWithEachOtherOnEveryFamily) {
         const std::string label = f.name + " n=" + std::to_string(n) + " seed=" + std::to_string(seed);
         std::optional<std::size_t> first;
         for (const Algorithm& a : optimal_programs()) {
-          if (p.size() > a.size_ceiling) continue;
+          if (!reliability::takes(a, p)) continue;
           const std::size_t pieces = valid_pieces(a, p, label);
           if (!first) first = pieces;
           EXPECT_EQ(pieces, *first) << a.name << " on " << label;

@@ -17,7 +17,6 @@
 namespace pd {
 namespace {
 
-using reliability::is_peer;
 
 constexpr double k2to30 = 1073741824.0, k2to31 = 2147483648.0;
 

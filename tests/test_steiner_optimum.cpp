@@ -9,6 +9,7 @@
 #include "core/validate.h"
 #include "generators/family.h"
 #include "tests/lattice_polygons.h"
+#include "tests/reliability.h"
 #include "tests/steiner_optimum_check.h"
 
 #include <gtest/gtest.h>
@@ -231,7 +232,7 @@ std::vector<const Algorithm*> steiner_optimal_programs() {
 // (see its header); a count above it, a program missing the witness's patterns.
 void expect_programs_agree(const Polygon& p, std::size_t best, const std::string& label) {
   for (const Algorithm* a : steiner_optimal_programs()) {
-    if (p.size() > a->size_ceiling) continue;
+    if (!reliability::takes(*a, p)) continue;
     Counters counters;
     const Decomposition d = a->run(p, counters);
     const Validation valid = validate(p, d, a->kind, a->steiner);
