@@ -56,7 +56,7 @@
 //     u_M x u_G > 0 enter a set kept in order of Y's rank along H in a forward pass, those with
 //     u_M x u_G < 0 in a backward pass, those parallel (P2 constant true) in one set, each query being
 //     answered before inserts of its own rank (strictness). The set is a bitset of the places along H
-//     under summary words (PlaceSet in chazelle_dobkin_tables.h: at most 3 word operations per insert
+//     under summary words (PlaceSet in engines/chazelle_dobkin/tables.h: at most 3 word operations per insert
 //     or nearest member for 32767 notches), and the orders along G and H are counting sorts of ranks,
 //     so a scan is O(r) besides finding what its queries see. The P2-feasible Y of a query are then
 //     exactly the set; P1 makes them a range from one end of it (the walk's steps), and the query's
@@ -132,7 +132,7 @@
 // boundary point, a vertex included (counter "x4_rays_at_vertex"), past which no edge of an X-pattern
 // runs (Theorem 12; Lemma 9, condition 3). So the scan misses no loose X4-pattern that the theorem
 // promises; whether the lost proof covers every degenerate case (a reduction that meets a vertex)
-// cannot be checked. Under A18' (and n5's own completeness, chazelle_dobkin_patterns.h) S is the same
+// cannot be checked. Under A18' (and n5's own completeness, engines/chazelle_dobkin/patterns.h) S is the same
 // table as n5's, by the induction over intervals. The tests compare the counts on every family, every
 // rotation of x4-quads (both pairings), jittered x4-quads with crossing rays and with spikes where only
 // P4 fails, many small polygons, and 600 lattice polygons where 3,411 loose rays stop at a vertex
@@ -167,17 +167,17 @@
 //   take most of the time).
 // - Rays are clipped by ray shooting on convex arcs (engines/search/ray_shooting.h), O(r log n) per ray;
 //   preprocessing and STEPs 2 and 4 are shared with chazelle-dobkin-n5 (views across the notches from
-//   trees of geodesics in place of superranges; see chazelle_dobkin_patterns.h). The scans' geodesic
+//   trees of geodesics in place of superranges; see engines/chazelle_dobkin/patterns.h). The scans' geodesic
 //   trees walk a decomposition of P by vertical chords of their own (engines/chazelle_dobkin/geodesics.h), built
 //   when a scan first needs a tree (on the reference run's comb, convex, few-notches and spiral
 //   polygons none does). P is never triangulated.
 //
-// Time: the views O(n + r^2 log n) (chazelle_dobkin_patterns.h), the loose rays O(r^2 log n), the
+// Time: the views O(n + r^2 log n) (engines/chazelle_dobkin/patterns.h), the loose rays O(r^2 log n), the
 // scans' vertical chords O(n + r^2 log n) once a scan needs a tree, O(r^2 log r) for the lists,
-// O(r log r) for each of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (chazelle_dobkin.h: O(1) per
+// O(r log r) for each of at most 3r geodesic trees; STEPs 2 and 4 O(r^3) (engines/chazelle_dobkin/program.h: O(1) per
 // test); STEP 3's X4 term O(r^3) lookups and the scans O(r) each ((6), (7); a PlaceSet operation is
 // O(1) for r < 32768), O(r^3) over the O(r^2) intervals; the checks of the O(r) patterns laid out
-// O(r^2 log(n/r)); STEP 5 O(n + r^2 log(n/r)) (chazelle_dobkin.h). Worst case O(n + r^3), the
+// O(r^2 log(n/r)); STEP 5 O(n + r^2 log(n/r)) (engines/chazelle_dobkin/program.h). Worst case O(n + r^3), the
 // thesis's: r^2 log n is at most n when r^2 log n <= n, and O(r^3) otherwise, since then
 // log n = O(log r). Space O(n + r^2) for the chords and the trees,
 // O(r^3) for the rows (a row per interval with a witness) and O(r^2) rationals for the lists and loose

@@ -10,10 +10,10 @@
 // far, so the tests actually made are often far fewer. Past its O(1) angle tests, a candidate's
 // segments are tested against the boundary's convex chains, O(r log(n/r)) (Theorem 15).
 // Deviation: superranges are replaced by trees of geodesics from each notch over a decomposition by
-// vertical chords (chazelle_dobkin_patterns.h), in the same O(n + r^2 log n) preprocessing.
+// vertical chords (engines/chazelle_dobkin/patterns.h), in the same O(n + r^2 log n) preprocessing.
 //
 // Time: O(n + r^2 log n) preprocessing, O(r^4) pattern tests: the X3 tests of STEPs 2 and 4 O(r^3),
-// O(1) each (chazelle_dobkin.h); the X4 tests O(r^4), each O(1) or, past the constant-time tests,
+// O(1) each (engines/chazelle_dobkin/program.h); the X4 tests O(r^4), each O(1) or, past the constant-time tests,
 // O(r log(n/r)); STEP 5 O(n + r^2 log(n/r)): O(n + r^5 log(n/r)) (Theorem 17). Space O(r^2 + n). Pre: a
 // simple counter-clockwise polygon. Output: an optimal convex decomposition (OPT = r + 1 - the most
 // compatible patterns), Steiner points exact.

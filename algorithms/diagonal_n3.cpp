@@ -7,7 +7,7 @@
 //
 // `diagonal-n4` repeats the O(n^3) search for a proper diagonal n-3 times, testing the same candidate
 // against the polygon's edges in every round although the answer cannot change. Here each of the
-// O(n^2) candidates is tested once (Theta(n): every edge and both neighbourhoods, diagonal_test.h), the
+// O(n^2) candidates is tested once (Theta(n): every edge and both neighbourhoods, engines/triangulation/diagonal_test.h), the
 // diagonals are sorted in the order `diagonal-n4` picks them (shortest first, ties by endpoints,
 // O(n^2 log n)), and each is output unless it crosses one already output (O(n) each). A diagonal
 // crossing an output one never becomes proper again, so the output is `diagonal-n4`'s, in its order.

@@ -6,7 +6,7 @@
 // Steiner points.
 //
 // Repeat n-3 times: for each of the O(n^2) candidate segments v_i v_j not yet output, test it against
-// every edge and both neighbourhoods (O(n), diagonal_test.h) and against the diagonals already output
+// every edge and both neighbourhoods (O(n), engines/triangulation/diagonal_test.h) and against the diagonals already output
 // (O(n)), each test in full, so that every round costs Theta(n^3); output a proper one. The slides
 // leave open which proper diagonal to output; this one outputs the shortest (ties by endpoints), so
 // that every round really examines every candidate, as the slides' count has it, and so that

@@ -8,7 +8,7 @@
 // counter-clockwise polygon; collinear vertices allowed. Pieces: == OPT.
 //
 // The outer program runs over the diagonals with a reflex endpoint; the inner one builds the piece on
-// each diagonal as a convex chain of sides (convex_chains.h). This is the O(n^2 r^2) form; the slides
+// each diagonal as a convex chain of sides (engines/convex/convex_chains.h). This is the O(n^2 r^2) form; the slides
 // give only the bound, so the inner program's details (a pointer and a running minimum per vertex, one
 // chain program per first side at a reflex end) are a reconstruction.
 #include "core/registry.h"

@@ -11,7 +11,7 @@
 // (2) each monotone piece swept top to bottom by the linear stack procedure of the slides (Garey,
 // Johnson, Preparata, Tarjan), whose stack is the piece's chain of inward cusps; (3) the diagonals of
 // each piece, then those of the partition, removed unless essential (Hertel-Mehlhorn's test,
-// essential_diagonals.h), which merges each piece's triangles into convex pieces and then convex
+// engines/convex/essential_diagonals.h), which merges each piece's triangles into convex pieces and then convex
 // pieces across the partition. Every diagonal left is essential, which gives the bound. Step (2)-(3)
 // stands in for Greene's per-piece rules; the result differs from `hertel-mehlhorn` only in the order
 // in which diagonals are considered (pieces first, partition last).

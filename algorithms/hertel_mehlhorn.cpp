@@ -8,7 +8,7 @@
 // triangulate_monotone in monotone.h); space O(n). Pre: a simple counter-clockwise polygon; collinear
 // vertices allowed. Output: diagonals only, no Steiner points; every diagonal left is essential, so at
 // most 2r + 1 pieces, at most 4 OPT. The O(n) removal, with its half-edge lists built by counting
-// sorts, is in essential_diagonals.h.
+// sorts, is in engines/convex/essential_diagonals.h.
 #include "core/registry.h"
 #include "engines/convex/essential_diagonals.h"
 #include "engines/triangulation/monotone.h"

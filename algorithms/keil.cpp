@@ -5,12 +5,12 @@
 // lists of the reflex vertices (visibility.h). Pre: a simple counter-clockwise polygon; collinear
 // vertices allowed. Pieces: == OPT.
 //
-// The same subproblems and combinations as keil-snoeyink (narrowest_pairs.h), but each subproblem's
+// The same subproblems and combinations as keil-snoeyink (engines/keil_snoeyink/narrowest_pairs.h), but each subproblem's
 // narrowest pairs are kept as a search structure: a sorted array, searched by bisection for the last
 // pair that keeps p_j convex (the pairs that do form a prefix in TypeA and a suffix in TypeB, by
 // Observation 1). Nothing is popped, so each TypeA/TypeB call costs O(log) instead of O(1) amortised:
 // this is the log factor that Keil & Snoeyink remove with stacks. Deviation: the two cases
-// narrowest_pairs.h adds for collinear vertices.
+// engines/keil_snoeyink/narrowest_pairs.h adds for collinear vertices.
 #include "core/registry.h"
 #include "engines/keil_snoeyink/narrowest_pairs.h"
 

@@ -1,14 +1,14 @@
 // min-ink: the convex decomposition without Steiner points of least total diagonal length ("minimum
 // ink"), Keil & Snoeyink (001), Sec. 1: O(n^2 r^2), the bound of Greene's double dynamic program.
 //
-// Time O(n^2 r^2) comparisons (convex_chains.h), space O(n^2) for the link table plus O(n r)
+// Time O(n^2 r^2) comparisons (engines/convex/convex_chains.h), space O(n^2) for the link table plus O(n r)
 // subproblems. Pre: a simple counter-clockwise polygon; collinear vertices allowed. Output: convex
 // pieces whose diagonals have the least total length among all convex decompositions by diagonals (not
 // necessarily the fewest pieces, so not registered as optimal in the piece-count sense).
 //
 // The engine is Greene's double program with lengths for weights: a side that is a diagonal weighs its
 // length plus the least ink on its far side. Lengths are square roots and are never compared by
-// accident: totals are compared by the exact rule of exact_ink.h (intervals, then cancellation of
+// accident: totals are compared by the exact rule of engines/convex/exact_ink.h (intervals, then cancellation of
 // equal lengths, merging of radicals with rational ratios, and MPFR evaluation of what remains, which
 // is then known not to be zero). The terms of a total are recovered from the chain and the stored
 // pieces when the intervals overlap.

@@ -47,6 +47,7 @@ struct Decomposition {
   std::vector<SteinerPoint> steiner;
   std::vector<Cut> cuts;
   std::optional<std::vector<Piece>> pieces;  // set by peers only
+  std::optional<double> own_seconds;         // set by external algorithms: their own timing of the call
 
   VertexId add_steiner(const QPoint& p, std::int64_t boundary_edge = kInterior);
   void add_cut(std::size_t a, std::size_t b) {

@@ -37,7 +37,7 @@ struct RunReport {
   const Counters* counters;
 };
 
-// The `run --json` object of CONTRACT.md: points in file order then Steiner points (exact), pieces
+// The `run --json` object of docs/CONTRACT.md: points in file order then Steiner points (exact), pieces
 // as counter-clockwise cycles of indices into points.
 std::string run_json(const RunReport& r);
 

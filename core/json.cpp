@@ -1,140 +1,103 @@
+// The reader and the escaping go through nlohmann/json (Debian's nlohmann-json3-dev), whose parser
+// keeps to RFC 8259's grammar. Its SAX interface hands each floating-point number over with its source
+// text, which Json keeps so that a coordinate parses to exactly the double it names; integers arrive
+// exact, as 64-bit values.
 #include "core/json.h"
 
-#include <cctype>
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <cstdlib>
 
 namespace pd {
 namespace {
 
-constexpr int kMaxDepth = 256;
+constexpr std::size_t kMaxDepth = 256;
 
-class Parser {
+// Builds a Json tree from nlohmann's SAX events. Containers under construction are kept on a stack;
+// nesting is limited so that hostile input cannot exhaust memory or, later, the stack of a recursive
+// reader.
+class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
  public:
-  explicit Parser(const std::string& s) : s_(s) {}
+  Json result() { return std::move(root_); }
+  const std::string& failure() const { return failure_; }
 
-  Json document() {
-    Json v = value(0);
-    skip_space();
-    if (i_ != s_.size()) fail("unexpected text after the JSON value");
-    return v;
+  bool null() override { return add(Json{}); }
+  bool boolean(bool value) override {
+    Json v;
+    v.type = Json::Type::Bool;
+    v.boolean = value;
+    return add(std::move(v));
+  }
+  bool number_integer(number_integer_t value) override { return add(number(std::to_string(value))); }
+  bool number_unsigned(number_unsigned_t value) override { return add(number(std::to_string(value))); }
+  bool number_float(number_float_t, const string_t& text) override { return add(number(text)); }
+  bool string(string_t& value) override {
+    Json v;
+    v.type = Json::Type::String;
+    v.text = std::move(value);
+    return add(std::move(v));
+  }
+  bool binary(binary_t&) override { return false; }
+  bool start_object(std::size_t) override { return open(Json::Type::Object); }
+  bool key(string_t& name) override {
+    keys_.back() = std::move(name);
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(Json::Type::Array); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
+    failure_ = "JSON: " + reason_of(e) + " at offset " + std::to_string(position);
+    return false;
   }
 
  private:
-  [[noreturn]] void fail(const std::string& what) const {
-    throw JsonError("JSON: " + what + " at offset " + std::to_string(i_));
+  static Json number(std::string text) {
+    Json v;
+    v.type = Json::Type::Number;
+    v.text = std::move(text);
+    return v;
   }
-  void skip_space() {
-    while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\n' || s_[i_] == '\r')) ++i_;
+  // nlohmann's message without its "[json.exception.parse_error.101] parse error at line 1, column 3: "
+  // prefix, whose position the offset already gives.
+  static std::string reason_of(const nlohmann::detail::exception& e) {
+    const std::string what = e.what();
+    const std::size_t colon = what.find(": ");
+    return colon == std::string::npos ? what : what.substr(colon + 2);
   }
-  bool take(char c) {
-    skip_space();
-    if (i_ < s_.size() && s_[i_] == c) return ++i_, true;
-    return false;
+  bool open(Json::Type type) {
+    if (open_.size() >= kMaxDepth) {
+      failure_ = "JSON: nesting too deep";
+      return false;
+    }
+    Json v;
+    v.type = type;
+    open_.push_back(std::move(v));
+    keys_.emplace_back();
+    return true;
   }
-  void expect(char c) {
-    if (!take(c)) fail(std::string("expected '") + c + "'");
+  bool close() {
+    Json done = std::move(open_.back());
+    open_.pop_back();
+    keys_.pop_back();
+    return add(std::move(done));
   }
-  bool literal(const char* word) {
-    const std::string w(word);
-    if (s_.compare(i_, w.size(), w) != 0) return false;
-    i_ += w.size();
+  bool add(Json v) {
+    if (open_.empty()) {
+      root_ = std::move(v);
+    } else if (open_.back().is_array()) {
+      open_.back().items.push_back(std::move(v));
+    } else {
+      open_.back().fields[keys_.back()] = std::move(v);
+    }
     return true;
   }
 
-  Json value(int depth) {
-    if (depth > kMaxDepth) fail("nesting too deep");
-    skip_space();
-    if (i_ >= s_.size()) fail("unexpected end");
-    Json v;
-    const char c = s_[i_];
-    if (c == '{') return object(depth);
-    if (c == '[') return array(depth);
-    if (c == '"') {
-      v.type = Json::Type::String;
-      v.text = string();
-    } else if (literal("true")) {
-      v.type = Json::Type::Bool;
-      v.boolean = true;
-    } else if (literal("false")) {
-      v.type = Json::Type::Bool;
-    } else if (literal("null")) {
-      v.type = Json::Type::Null;
-    } else {
-      v.type = Json::Type::Number;
-      v.text = number();
-    }
-    return v;
-  }
-
-  Json object(int depth) {
-    Json v;
-    v.type = Json::Type::Object;
-    expect('{');
-    if (take('}')) return v;
-    do {
-      skip_space();
-      if (i_ >= s_.size() || s_[i_] != '"') fail("expected a member name");
-      std::string key = string();
-      expect(':');
-      v.fields[key] = value(depth + 1);
-    } while (take(','));
-    expect('}');
-    return v;
-  }
-
-  Json array(int depth) {
-    Json v;
-    v.type = Json::Type::Array;
-    expect('[');
-    if (take(']')) return v;
-    do v.items.push_back(value(depth + 1));
-    while (take(','));
-    expect(']');
-    return v;
-  }
-
-  std::string string() {
-    ++i_;  // opening quote
-    std::string out;
-    while (i_ < s_.size() && s_[i_] != '"') {
-      char c = s_[i_++];
-      if (c == '\\') {
-        if (i_ >= s_.size()) fail("unterminated string");
-        const char e = s_[i_++];
-        switch (e) {
-          case 'n': c = '\n'; break;
-          case 't': c = '\t'; break;
-          case 'r': c = '\r'; break;
-          case 'b': c = '\b'; break;
-          case 'f': c = '\f'; break;
-          case 'u':
-            if (i_ + 4 > s_.size()) fail("bad \\u escape");
-            i_ += 4;
-            c = '?';
-            break;
-          default: c = e;
-        }
-      }
-      out.push_back(c);
-    }
-    if (i_ >= s_.size()) fail("unterminated string");
-    ++i_;
-    return out;
-  }
-
-  std::string number() {
-    const std::size_t begin = i_;
-    if (i_ < s_.size() && (s_[i_] == '-' || s_[i_] == '+')) ++i_;
-    while (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.' ||
-                              s_[i_] == 'e' || s_[i_] == 'E' || s_[i_] == '-' || s_[i_] == '+'))
-      ++i_;
-    if (i_ == begin) fail("unexpected character");
-    return s_.substr(begin, i_ - begin);
-  }
-
-  const std::string& s_;
-  std::size_t i_ = 0;
+  std::vector<Json> open_;
+  std::vector<std::string> keys_;  // per open container: the member name being read
+  Json root_;
+  std::string failure_;
 };
 
 }  // namespace
@@ -153,17 +116,14 @@ double Json::number() const {
   return d;
 }
 
-Json parse_json(const std::string& text) { return Parser(text).document(); }
+Json parse_json(const std::string& text) {
+  TreeBuilder builder;
+  if (!nlohmann::json::sax_parse(text, &builder)) throw JsonError(builder.failure());
+  return builder.result();
+}
 
 std::string json_quote(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (c == '\n') out += "\\n";
-    else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
-    else out += c;
-  }
-  return out + "\"";
+  return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace pd

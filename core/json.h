@@ -1,5 +1,6 @@
-// A small JSON reader (for GeoJSON input, fixtures and sweep files) and the string escaping the writers
-// use. Numbers keep their source text so that coordinates parse to exactly the double they name.
+// The JSON reader (for GeoJSON input, fixtures and sweep files) and the string escaping the writers use,
+// both through nlohmann/json (json.cpp). Numbers keep their source text so that coordinates parse to
+// exactly the double they name.
 #pragma once
 
 #include <map>

@@ -43,6 +43,7 @@ struct Algorithm {
   std::string peer{};                  // whose code it is: empty for polydecomp's own, else the library
   Accepts accepts{};                   // the input it takes
   std::size_t size_ceiling = 1000000;  // largest n that sweeps and property tests give it (its budget)
+  bool times_itself = false;           // run reports its own timing (Decomposition::own_seconds)
   RunFn run{};
 };
 

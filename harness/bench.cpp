@@ -2,22 +2,27 @@
 // key "algorithm/family/n:N/r:R/seed:S", and journals every finished key to
 // DIR/SWEEP[.shard-I-of-K].journal.jsonl. Keys already in the journal are not run again, so an
 // interrupted sweep resumes where it stopped. analysis/sweep.py drives it and assembles the JSON and
-// CSV results; see harness/README-bench.md.
+// CSV results.
 //
 // Exit status: 0 the sweep (or shard) is complete; 2 bad usage; kTimeoutExit (75) a key hit the
 // timeout, was journaled as skipped, and the sweep should be run again to go on.
 #include "harness/bench_runner.h"
 #include "harness/large_stack.h"
+#include "harness/plugins.h"
 #include "harness/provenance.h"
 
 #include <benchmark/benchmark.h>
+#include <boost/program_options.hpp>
 
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <regex>
 #include <string>
 #include <vector>
+
+namespace po = boost::program_options;
 
 namespace pd {
 namespace {
@@ -27,44 +32,41 @@ struct Options {
   std::string sweeps_file = default_sweeps_file();
   std::string out = "results";
   Shard shard;
+  std::vector<std::string> plugins;         // folders of external algorithms' manifests
   std::vector<std::string> benchmark_args;  // everything else, for Google Benchmark
 };
 
-const char* kUsage =
-    "usage: polydecomp-bench [--sweep NAME] [--sweeps FILE] [--out DIR] [--shard I/K] [--benchmark_filter=REGEX]\n"
-    "  --sweep   a sweep defined in the sweeps file (default quick)\n"
-    "  --sweeps  the sweeps file (default harness/sweeps.json of the source tree)\n"
-    "  --out     where the journal goes (default results)\n"
-    "  --shard   run shard I of K: every K-th polygon of the sweep, starting with the I-th\n"
-    "Other --benchmark_* flags go to Google Benchmark; a filter selects keys by name.\n";
+const char* kUsage = "usage: polydecomp-bench [options] [--benchmark_*=...]\n";
+
+po::options_description option_descriptions(Options& o, std::string& shard) {
+  po::options_description opts("Options (other --benchmark_* flags go to Google Benchmark; a filter selects keys by name)");
+  opts.add_options()("help,h", "this help")(
+      "sweep", po::value(&o.sweep)->default_value(o.sweep), "a sweep defined in the sweeps file")(
+      "sweeps", po::value(&o.sweeps_file)->default_value(o.sweeps_file), "the sweeps file")(
+      "out", po::value(&o.out)->default_value(o.out), "where the journal goes")(
+      "shard", po::value(&shard), "I/K: run shard I of K, every K-th polygon of the sweep from the I-th")(
+      "plugins", po::value(&o.plugins)->composing(), "a folder of external algorithms' manifests (any number)");
+  return opts;
+}
 
 Options parse_options(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const auto value = [&](const std::string& flag) -> const char* {
-      if (arg == flag) {
-        if (i + 1 >= argc) throw SweepError(flag + " needs a value");
-        return argv[++i];
-      }
-      if (arg.rfind(flag + "=", 0) == 0) return argv[i] + flag.size() + 1;
-      return nullptr;
-    };
-    if (arg == "--help" || arg == "-h") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
-    } else if (const char* v = value("--sweep")) {
-      o.sweep = v;
-    } else if (const char* v = value("--sweeps")) {
-      o.sweeps_file = v;
-    } else if (const char* v = value("--out")) {
-      o.out = v;
-    } else if (const char* v = value("--shard")) {
-      o.shard = parse_shard(v);
-    } else {
-      o.benchmark_args.push_back(arg);
-    }
+  std::string shard;
+  const po::options_description opts = option_descriptions(o, shard);
+  po::variables_map vm;
+  try {
+    const po::parsed_options parsed = po::command_line_parser(argc, argv).options(opts).allow_unregistered().run();
+    po::store(parsed, vm);
+    po::notify(vm);
+    o.benchmark_args = po::collect_unrecognized(parsed.options, po::include_positional);
+  } catch (const po::error& e) {
+    throw SweepError(std::string(e.what()) + "\n" + kUsage);
   }
+  if (vm.count("help")) {
+    std::cout << kUsage << opts;
+    std::exit(0);
+  }
+  if (vm.count("shard")) o.shard = parse_shard(shard);
   return o;
 }
 
@@ -137,6 +139,7 @@ std::vector<SweepKey> sweep_keys(const Sweep& sweep, const std::vector<SweepPoly
 
 int run(int argc, char** argv) {
   const Options o = parse_options(argc, argv);
+  register_plugins(plugin_folders(o.plugins));
   const Sweep sweep = load_sweep(o.sweeps_file, o.sweep);
   initialize_benchmark(o, sweep, argv[0]);
   const KeyFilter filter(benchmark::GetBenchmarkFilter());

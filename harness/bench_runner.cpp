@@ -88,7 +88,10 @@ void SweepRunner::remember(const SweepKey& key, const JournalRecord& record) {
 
 void SweepRunner::register_key(const SweepKey& key) {
   registered_[key.name] = &key;
-  benchmark::RegisterBenchmark(key.name.c_str(), [this, &key](benchmark::State& state) { run_key(state, key); });
+  benchmark::internal::Benchmark* b =
+      benchmark::RegisterBenchmark(key.name.c_str(), [this, &key](benchmark::State& state) { run_key(state, key); });
+  // An external algorithm's time is its own report of the call, without the exchange around it.
+  if (key.algorithm->times_itself) b->UseManualTime();
 }
 
 void SweepRunner::learn(const SweepKey& key, const std::string& status, const std::string& error_message,
@@ -133,7 +136,12 @@ void SweepRunner::run_key(benchmark::State& state, const SweepKey& key) {
   Decomposition d;
   for (auto _ : state) {
     try {
+      const auto start = std::chrono::steady_clock::now();
       d = key.algorithm->run(*cached.polygon, ops);
+      if (key.algorithm->times_itself) {
+        const double call = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        state.SetIterationTime(d.own_seconds.value_or(call));
+      }
     } catch (const std::exception& e) {
       state.SkipWithError((std::string("failed: ") + e.what()).c_str());
       break;
@@ -208,7 +216,7 @@ void SweepRunner::finish(const benchmark::BenchmarkReporter::Run& run) {
   learn(key, status, run.error_message, seconds);
 
   JsonLine line;
-  line.str("name", run.benchmark_name())
+  line.str("name", key.name)
       .num("family_index", static_cast<double>(run.family_index))
       .num("per_family_instance_index", static_cast<double>(run.per_family_instance_index))
       .str("run_name", run.run_name.str())
@@ -219,7 +227,7 @@ void SweepRunner::finish(const benchmark::BenchmarkReporter::Run& run) {
   if (run.error_occurred) line.raw("error_occurred", "true").str("error_message", run.error_message);
   line.num("iterations", static_cast<double>(run.iterations))
       .num("real_time", run.GetAdjustedRealTime())
-      .num("cpu_time", run.GetAdjustedCPUTime())
+      .num("cpu_time", key.algorithm->times_itself ? run.GetAdjustedRealTime() : run.GetAdjustedCPUTime())
       .str("time_unit", benchmark::GetTimeUnitString(run.time_unit));
   for (const auto& [name, counter] : run.counters) line.num(name, counter.value);
   if (!run.report_label.empty()) line.str("label", run.report_label);

@@ -1,4 +1,4 @@
-// The polydecomp command line: list | generate | run | cut (see CONTRACT.md).
+// The polydecomp command line: list | generate | run | cut (see docs/CONTRACT.md).
 //
 // Exit status: 0 success, 2 bad usage, 3 bad polygon, 4 an algorithm failed (or `run --max-seconds`
 // stopped it). Every failure prints one line on stderr beginning "error:" and nothing on stdout; output
@@ -10,6 +10,7 @@
 #include "core/validate.h"
 #include "generators/family.h"
 #include "harness/large_stack.h"
+#include "harness/plugins.h"
 #include "harness/progress.h"
 
 #include <boost/program_options.hpp>
@@ -44,9 +45,10 @@ struct Exit {
 [[noreturn]] void usage(const std::string& why) { throw Exit{kUsage, why}; }
 
 const char* kUsageText =
-    "usage: polydecomp list [--json | --markdown]\n"
+    "usage: polydecomp list [--json | --markdown] [--plugins DIR]...\n"
     "       polydecomp generate --family F --n N [--reflex R] [--seed S] [--format txt|wkt|geojson] [-o FILE]\n"
     "       polydecomp run --algorithm A --input FILE [--json] [--svg FILE] [--no-validate] [--max-seconds S]\n"
+    "                      [--plugins DIR]...\n"
     "       polydecomp cut --input FILE [--weights reflex|all|FILE] [--vertical] [--json]\n";
 
 po::variables_map parse(const std::vector<std::string>& args, const po::options_description& opts) {
@@ -118,10 +120,28 @@ std::string list_text() {
   return out;
 }
 
+// --plugins DIR (any number of times): folders of external algorithms' manifests, besides the project's
+// peers/ and POLYDECOMP_PLUGINS.
+void add_plugins_option(po::options_description& opts) {
+  opts.add_options()("plugins", po::value<std::vector<std::string>>()->composing(), "folder of plug-in manifests");
+}
+
+void register_plugins_of(const po::variables_map& vm) {
+  const std::vector<std::string> given =
+      vm.count("plugins") ? vm["plugins"].as<std::vector<std::string>>() : std::vector<std::string>{};
+  try {
+    register_plugins(plugin_folders(given));
+  } catch (const PluginError& e) {
+    usage(e.what());
+  }
+}
+
 int cmd_list(const std::vector<std::string>& args) {
   po::options_description opts;
   opts.add_options()("json", "JSON output")("markdown", "a Markdown table")("help,h", "help");
+  add_plugins_option(opts);
   const auto vm = parse(args, opts);
+  register_plugins_of(vm);
   emit(vm.count("json") ? list_json() : vm.count("markdown") ? list_markdown() : list_text(), "");
   return 0;
 }
@@ -166,7 +186,8 @@ RunOutput run_output(const Algorithm& algo, const Polygon& polygon, bool json, b
   } catch (const std::exception& e) {
     throw Exit{kAlgorithmFailed, algo.name + " failed: " + e.what()};
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = d.own_seconds ? *d.own_seconds
+                                        : std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<Piece> pieces;
   std::optional<bool> valid;
   std::string reason;
@@ -278,7 +299,9 @@ int cmd_run(const std::vector<std::string>& args) {
       "input", po::value<std::string>()->required(), "polygon file")("json", "JSON output")(
       "svg", po::value<std::string>(), "SVG figure")("no-validate", "skip validation")(
       "max-seconds", po::value<double>(), "stop the algorithm (and validation) after this many seconds");
+  add_plugins_option(opts);
   const auto vm = parse(args, opts);
+  register_plugins_of(vm);
   const std::string name = vm["algorithm"].as<std::string>();
   const Algorithm* algo = find_algorithm(name);
   if (!algo) usage("unknown algorithm '" + name + "'; 'polydecomp list' names them");

@@ -61,6 +61,21 @@ TEST(Registry, HoldsEveryAlgorithmFile) {
   EXPECT_EQ(static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(PD_SOURCE_DIR "/algorithms"),
                                                    std::filesystem::directory_iterator())),
             algorithms().size());
+  EXPECT_THROW(register_algorithm(*find_algorithm("monotone")), std::logic_error);  // a second "monotone"
+}
+
+// What an algorithm takes is refused with one sentence naming the limit, before it runs.
+TEST(Registry, RefusesWhatAnAlgorithmDoesNotTake) {
+  const Polygon square = Polygon::make({{0, 0}, {2, 0}, {2, 2}, {0, 2}});
+  const Polygon ell = Polygon::make({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
+  const Algorithm fan{.name = "fan", .kind = Kind::Triangulation, .accepts = {.convex_only = true}};
+  EXPECT_FALSE(refusal(fan, square));
+  EXPECT_EQ(refusal(fan, ell), "fan takes only convex polygons; this one has 1 reflex vertex");
+  const Algorithm small{.name = "small", .accepts = {.max_vertices = 5}};
+  EXPECT_FALSE(refusal(small, square));
+  EXPECT_EQ(refusal(small, ell), "small takes at most 5 vertices; this polygon has 6");
+  EXPECT_FALSE(reliability::takes(fan, ell));
+  EXPECT_TRUE(reliability::takes(fan, square));
 }
 
 struct Case {

@@ -831,7 +831,7 @@ TEST(ChazelleDobkinTables, SameCountOnManySmallPolygons) {
   EXPECT_GT(compared, 500u);
 }
 
-// Degenerate position, where A18' is assumed (chazelle_dobkin_cubic.cpp): lattice polygons, where loose
+// Degenerate position, where A18' is assumed (algorithms/chazelle_dobkin.cpp): lattice polygons, where loose
 // rays stop at vertices, extensions run along edges and Steiner points fall on lines through vertices.
 // The same count as chazelle-dobkin-n5, which does not rest on Theorem 18, and many rays stopped.
 TEST(ChazelleDobkinTables, SameCountOnDegenerateLatticePolygons) {

@@ -1,4 +1,4 @@
-// The command line end to end, as CONTRACT.md promises it: list, generate, run, and the error
+// The command line end to end, as docs/CONTRACT.md promises it: list, generate, run, and the error
 // behaviour (one "error:" line, exit 2 for usage and 3 for a bad polygon, nothing on stdout).
 #include "core/io.h"
 #include "core/json.h"
@@ -72,11 +72,28 @@ TEST_F(Cli, ListJsonHasEveryAlgorithmWithTheContractKeys) {
   const Json list = parse_json(r.out);
   ASSERT_EQ(list.items.size(), algorithms().size());
   for (const Json& a : list.items) {
-    for (const char* key : {"name", "kind", "steiner", "optimal", "time_bound", "pieces_bound", "source"})
+    for (const char* key : {"name", "kind", "steiner", "optimal", "time_bound", "pieces_bound", "source", "peer",
+                            "holes", "accepts", "size_ceiling"})
       EXPECT_NE(a.get(key), nullptr) << key;
-    EXPECT_NE(find_algorithm(a.get("name")->text), nullptr);
+    const Algorithm* registered = find_algorithm(a.get("name")->text);
+    ASSERT_NE(registered, nullptr);
+    EXPECT_EQ(a.get("peer")->type == Json::Type::Null, !is_peer(*registered)) << registered->name;
+    EXPECT_EQ(a.get("accepts")->get("convex_only")->boolean, registered->accepts.convex_only) << registered->name;
   }
   EXPECT_EQ(cli("list").status, 0);
+}
+
+// The README's algorithm table is `polydecomp list --markdown`, between its two markers.
+TEST_F(Cli, ReadmeAlgorithmTableIsCurrent) {
+  const std::string readme = slurp(PD_SOURCE_DIR "/README.md");
+  const std::string begin = "<!-- polydecomp list --markdown -->\n", end = "<!-- end of list -->";
+  const std::size_t from = readme.find(begin), to = readme.find(end);
+  ASSERT_NE(from, std::string::npos);
+  ASSERT_NE(to, std::string::npos);
+  const Result r = cli("list --markdown");
+  ASSERT_EQ(r.status, 0);
+  EXPECT_EQ(readme.substr(from + begin.size(), to - from - begin.size()), r.out)
+      << "run: build/polydecomp list --markdown, and paste it into README.md";
 }
 
 TEST_F(Cli, GenerateIsDeterministicAndNamesTheFeasibleRange) {

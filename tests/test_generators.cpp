@@ -181,7 +181,7 @@ TEST(Generators, RegistryListsTheFamiliesSortedByName) {
   ASSERT_NE(find_family("spiral"), nullptr);
   EXPECT_EQ(find_family("spiral")->name, "spiral");
   EXPECT_EQ(find_family("no-such"), nullptr);
-  EXPECT_FALSE(register_family(*find_family("comb")));
+  EXPECT_THROW(register_family(*find_family("comb")), std::logic_error);  // a second "comb" is a bug
   for (const Family& f : families()) {
     EXPECT_FALSE(f.shape.empty()) << f.name;
     EXPECT_FALSE(f.range().empty()) << f.name;

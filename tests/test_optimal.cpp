@@ -384,7 +384,7 @@ TEST(MinInk, CanUseMorePiecesThanTheMinimum) {
   expect_least_ink(p, "more pieces, less ink");
 }
 
-// The exact rule for sums of square roots (exact_ink.h), against CORE's exact expressions.
+// The exact rule for sums of square roots (engines/convex/exact_ink.h), against CORE's exact expressions.
 std::pair<Rational, Rational> term(long c, long q) { return {Rational(c), Rational(q)}; }
 
 TEST(ExactInk, FindsExactTiesThatIntervalsCannot) {

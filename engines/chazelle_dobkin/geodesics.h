@@ -1,6 +1,6 @@
 // Geodesics (shortest paths inside a simple polygon) between points of its boundary, for chazelle-dobkin's
 // test of "XY lies in P" between two loose rays (algorithms/chazelle_dobkin.cpp, (7)), and for
-// both Chazelle-Dobkin programs' views across the notches (chazelle_dobkin_patterns.h): how each
+// both Chazelle-Dobkin programs' views across the notches (engines/chazelle_dobkin/patterns.h): how each
 // geodesic leaves its root (its first turn) and whether a straight one touches the boundary.
 //
 // Method: the funnel walk of Lee and Preparata ("Euclidean shortest paths in the presence of

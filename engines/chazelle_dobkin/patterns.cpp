@@ -1,4 +1,4 @@
-// Pattern detection for Chazelle-Dobkin: see chazelle_dobkin_patterns.h for the method, the
+// Pattern detection for Chazelle-Dobkin: see engines/chazelle_dobkin/patterns.h for the method, the
 // reconstruction of Theorem 14's segments and the deviation from Theorem 11.
 #include "engines/chazelle_dobkin/patterns.h"
 

@@ -125,7 +125,7 @@ struct AdaptedNotch {
   QPoint backward;    // a point of the backward arm other than the notch
 };
 
-// The region of Steiner points of an X3 test (chazelle_dobkin_patterns.cpp).
+// The region of Steiner points of an X3 test (engines/chazelle_dobkin/patterns.cpp).
 template <class P>
 struct Region;
 

@@ -1,4 +1,4 @@
-// Keil & Snoeyink's Algorithm 1: Keil's dynamic program (narrowest_pairs.h) with stacks in place of
+// Keil & Snoeyink's Algorithm 1: Keil's dynamic program (engines/keil_snoeyink/narrowest_pairs.h) with stacks in place of
 // its search structure. The method of `keil-snoeyink` (its paper, bounds and proof of the stack
 // bound: algorithms/keil_snoeyink.cpp), also run by `keil-snoeyink-reduced` on its reduced polygon.
 #include "engines/keil_snoeyink/stacks.h"

@@ -1,13 +1,13 @@
 // The boundary of a polygon cut into convex chains between its notches (B. Chazelle, Computational
 // Geometry and Convexity, thesis, Yale 1980 (000), Sec. 2.2.2, Figure 2.6, Theorem 3), shared by
-// `naive-chains` (ray shooting, naive_chains.cpp) and Chazelle-Dobkin's pattern tests (segments against
-// the boundary, chazelle_dobkin_patterns.h).
+// `naive-chains` (ray shooting, engines/naive/naive_chains.cpp) and Chazelle-Dobkin's pattern tests (segments against
+// the boundary, engines/chazelle_dobkin/patterns.h).
 //
 // A chain has `edges` edges from polygon vertex `start` on, counter-clockwise, such that every prefix
 // closes into a convex polygon: its edge directions turn counter-clockwise through less than a full
 // turn, so, measured from its first edge, they are sorted by angle, and a line meets it in O(log k)
 // binary-search steps for k edges (Chapter 4, where the thesis does this, is not part of the text we
-// have; see naive_chains.cpp). The chains are the thesis's (greedy, maximal): m <= 2(1 + r) of them for
+// have; see engines/naive/naive_chains.cpp). The chains are the thesis's (greedy, maximal): m <= 2(1 + r) of them for
 // r notches (Theorem 3), found in one O(n) pass.
 #pragma once
 

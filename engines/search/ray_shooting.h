@@ -1,5 +1,5 @@
 // Ray shooting from polygon vertices, for keil-snoeyink-reduced, Chazelle-Dobkin's loose rays
-// (chazelle_dobkin_tables.h) and the vertical chords that its geodesics walk (geodesics.h).
+// (engines/chazelle_dobkin/tables.h) and the vertical chords that its geodesics walk (geodesics.h).
 //
 // Keil & Snoeyink (001, Sec. 4) shoot O(r^2) rays in O(log n) each after linear preprocessing
 // (geodesic triangulations, Chazelle et al.; or Hershberger-Suri). This is a simpler structure with a
