@@ -1,7 +1,7 @@
 import math
 import unittest
 
-import bound_expr
+from polydecomp_analysis import bound_expr
 
 
 class TimeBoundTest(unittest.TestCase):

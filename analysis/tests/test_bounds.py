@@ -2,8 +2,9 @@ import os
 import tempfile
 import unittest
 
-import bounds
-import synthetic
+from polydecomp_analysis import bounds
+
+from . import synthetic
 
 
 def row(markdown, section, first_cells):
