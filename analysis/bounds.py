@@ -19,7 +19,11 @@ def main(argv=None):
     parser.add_argument("--registry", help="a saved `polydecomp list --json` output, instead of running it")
     parser.add_argument("-o", "--output", default="results/bounds.md")
     args = parser.parse_args(argv)
-    registry = bounds.load_registry(args.polydecomp, args.registry)
+    try:
+        registry = bounds.load_registry(args.polydecomp, args.registry)
+    except ValueError as e:
+        print("error: " + str(e), file=sys.stderr)
+        return 1
     bounds.write_bounds(args.results, registry, args.output)
     print("wrote " + args.output)
     return 0

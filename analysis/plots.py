@@ -21,7 +21,11 @@ def main(argv=None):
     parser.add_argument("-o", "--output", default="results/plots")
     parser.add_argument("--gallery", default="random:40:12:1", help="FAMILY:N:R:SEED, or 'none'")
     args = parser.parse_args(argv)
-    registry = bounds.load_registry(args.polydecomp, args.registry)
+    try:
+        registry = bounds.load_registry(args.polydecomp, args.registry)
+    except ValueError as e:
+        print("error: " + str(e), file=sys.stderr)
+        return 1
     gallery_spec = None if args.gallery == "none" else args.gallery
     made = plots.make_plots(args.results, registry, args.output, args.polydecomp, gallery_spec)
     print("wrote {} figures to {}".format(len(made), args.output))

@@ -12,8 +12,9 @@ that play by the same rules: a diagonal-only algorithm is compared with diagonal
 that may add Steiner points with all. Where no optimal algorithm ran on a polygon, that best is only an
 upper bound on OPT, so ratios are then lower than the true approximation ratios.
 
-Against the peer: every other triangulation is timed against CGAL's constrained Delaunay triangulation
-(cgal-cdt) on the same polygons at n = 10^5 and 10^6, median over the seeds both ran.
+Against the peer: every other triangulation of polydecomp's own is timed against CGAL's constrained
+Delaunay triangulation (cgal-cdt) on the same polygons at n = 10^5 and 10^6, median over the seeds both
+ran. Which algorithms are peers (another library's code) the registry says in its "peer" field.
 """
 
 import collections
@@ -27,14 +28,25 @@ MAX_LISTED = 10  # invalid or failed keys listed per algorithm
 
 
 def load_registry(polydecomp=None, registry_file=None):
-    """{name: algorithm} from `polydecomp list --json` or from a saved copy of its output."""
+    """{name: algorithm} from `polydecomp list --json` or from a saved copy of its output. Raises
+    ValueError when an entry lacks the "peer" field: the copy was saved by an older build."""
     if registry_file:
         with open(registry_file, encoding="utf-8") as f:
             entries = json.load(f)
     else:
         out = subprocess.run([polydecomp, "list", "--json"], check=True, capture_output=True, text=True).stdout
         entries = json.loads(out)
+    unmarked = [a["name"] for a in entries if "peer" not in a]
+    if unmarked:
+        raise ValueError("the registry {} has no \"peer\" field (on {}): save `polydecomp list --json` again".format(
+            registry_file or polydecomp, ", ".join(unmarked)))
     return {a["name"]: a for a in entries}
+
+
+def is_peer(algo):
+    """Whether a registered algorithm is another library's code ("peer": "CGAL 5.5"), not polydecomp's
+    own ("peer": null)."""
+    return algo["peer"] is not None
 
 
 def best_pieces(runs, registry):
@@ -219,7 +231,7 @@ PEER_SIZES = (100000, 1000000)  # the sizes of the comparison (issue 4: "at n = 
 
 
 def peer_rows(runs, registry, peer=PEER, sizes=PEER_SIZES):
-    """Every other algorithm of the peer's kind (CGAL's own excepted) against the peer on the same
+    """Every other algorithm of the peer's kind (other peers excepted) against the peer on the same
     polygons, at the given sizes: per family, n and r, [algorithm, family, n, r,
     seeds, median seconds, the peer's median seconds, speed-up (the peer's median over the
     algorithm's), seeds on which the algorithm was faster]. Medians are over the seeds both ran."""
@@ -229,7 +241,7 @@ def peer_rows(runs, registry, peer=PEER, sizes=PEER_SIZES):
     pairs = collections.defaultdict(list)
     for run in ok:
         algo = registry.get(run.algorithm)
-        if (algo and algo["kind"] == kind and run.algorithm != peer and not run.algorithm.startswith("cgal-")
+        if (algo and algo["kind"] == kind and run.algorithm != peer and not is_peer(algo)
                 and run.n in sizes and run.polygon in peer_seconds):
             pairs[(run.algorithm, run.family, run.n, run.r)].append((run.seconds, peer_seconds[run.polygon]))
     rows = []

@@ -1,3 +1,4 @@
+import json
 import os
 import re
 import tempfile
@@ -115,6 +116,22 @@ class BoundsTest(SyntheticSweep):
         self.assertTrue(summary[1][3].startswith("1600.00x ("), summary[1][3])  # the lowest, at n = 1600
         slow = bounds.peer_rows(self.runs, self.registry, peer="tri", sizes=(3200,))
         self.assertEqual(bounds.peer_summary(slow)[0][:3], ["liar", 2, 2])
+
+    def test_other_peers_are_not_set_against_the_peer(self):
+        registry = dict(self.registry, quad=dict(self.registry["quad"], peer="Synthetic 1.0"))
+        self.assertTrue(bounds.is_peer(registry["quad"]))
+        self.assertFalse(bounds.is_peer(registry["tri"]))
+        rows = bounds.peer_rows(self.runs, registry, peer="liar", sizes=(1600, 3200))
+        self.assertEqual({r[0] for r in rows}, {"tri"})
+
+    def test_a_registry_without_peer_fields_is_refused(self):
+        with open(self.registry_path, encoding="utf-8") as f:
+            entries = json.load(f)
+        old = os.path.join(self.tmp.name, "old-registry.json")
+        with open(old, "w", encoding="utf-8") as f:
+            json.dump(entries[:1] + [{k: v for k, v in a.items() if k != "peer"} for a in entries[1:]], f)
+        with self.assertRaisesRegex(ValueError, r'no "peer" field \(on liar, nr2, '):
+            bounds.load_registry(registry_file=old)
 
     def test_an_invalid_result_is_not_a_reference(self):
         best = bounds.best_pieces(self.runs, self.registry)

@@ -1,3 +1,4 @@
+import json
 import os
 import subprocess
 import sys
@@ -43,6 +44,16 @@ class ScriptsTest(unittest.TestCase):
         self.assertEqual((done.returncode, done.stdout), (0, "wrote {}\n".format(self.path("bounds.md"))), done.stderr)
         with open(self.path("bounds.md"), encoding="utf-8") as f:
             self.assertTrue(f.read().startswith("# Claimed bounds against measurements\n"))
+
+    def test_bounds_refuses_a_registry_without_peer_fields(self):
+        synthetic.write(self.path("s.json"), self.path("registry.json"))
+        with open(self.path("registry.json"), "w", encoding="utf-8") as f:
+            json.dump([{k: v for k, v in a.items() if k != "peer"} for a in synthetic.REGISTRY], f)
+        done = run_script("bounds.py", self.path("s.json"), "--registry", self.path("registry.json"),
+                          "-o", self.path("bounds.md"))
+        self.assertEqual(done.returncode, 1)
+        self.assertTrue(done.stderr.startswith("error: the registry "), done.stderr)
+        self.assertFalse(os.path.exists(self.path("bounds.md")))
 
     def test_merge_refuses_a_missing_shard(self):
         with open(self.path("s.shard-1-of-2.journal.jsonl"), "w", encoding="utf-8"):
