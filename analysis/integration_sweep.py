@@ -21,10 +21,9 @@ import tempfile
 import time
 import unittest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+from polydecomp_analysis import results
 
-import results  # noqa: E402
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 BUILD = None
 

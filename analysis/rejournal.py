@@ -1,49 +1,17 @@
 #!/usr/bin/python3
 """Writes a sweep's journal back from its assembled results, leaving out the keys to measure again.
 
-The journal (RESULTS/SWEEP.journal.jsonl) is not committed; the assembled RESULTS/SWEEP.json is. On a
-fresh clone, to measure some keys of the committed reference run again and keep the rest, this writes
-the journal from SWEEP.json: its context (already merged from every earlier invocation) and every run
-whose name does not match --remeasure. Running the sweep again then measures just the keys left out,
-and assembling merges the old context with the new invocations' contexts (results.merge_contexts
-counts the invocations of both and lists their versions in order).
-
-The journal written is the unsharded one (a sharded sweep journals per shard and is merged by
-merge.py). Keys the sweep has gained since (a changed sweeps file or a new algorithm) are measured
-too.
+On a fresh clone, this lets the sweep measure some keys of the committed reference run again and keep
+the rest (polydecomp_analysis/rejournal.py says how the contexts are kept).
 
 usage: rejournal.py --sweep NAME [--results DIR] [--remeasure REGEX]
 """
 
 import argparse
-import json
-import os
 import re
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-
-import results  # noqa: E402
-
-
-def rejournal(results_dir, sweep, remeasure):
-    """Writes the journal; returns (runs kept, runs left out). Raises ValueError when the journal
-    already exists (it may hold measurements the results file lacks) or the results file is missing."""
-    stem = os.path.join(results_dir, sweep)
-    journal = stem + ".journal.jsonl"
-    if os.path.exists(journal):
-        raise ValueError("{} exists; it would be replaced (delete it first)".format(journal))
-    try:
-        with open(stem + ".json", encoding="utf-8") as f:
-            doc = json.load(f)
-    except FileNotFoundError:
-        raise ValueError("no results file {}.json".format(stem)) from None
-    pattern = re.compile(remeasure) if remeasure else None
-    runs = doc.get("benchmarks", [])
-    kept = [run for run in runs if not (pattern and pattern.search(run.get("name", "")))]
-    lines = [{"context": doc.get("context", {})}] + kept
-    results.write_atomic(journal, "".join(json.dumps(line) + "\n" for line in lines))
-    return len(kept), len(runs) - len(kept)
+from polydecomp_analysis import rejournal
 
 
 def main(argv=None):
@@ -53,7 +21,7 @@ def main(argv=None):
     parser.add_argument("--remeasure", help="a regular expression searched in key names: those keys are left out")
     args = parser.parse_args(argv)
     try:
-        kept, left_out = rejournal(args.results, args.sweep, args.remeasure)
+        kept, left_out = rejournal.rejournal(args.results, args.sweep, args.remeasure)
     except (ValueError, re.error) as e:
         print("error: " + str(e), file=sys.stderr)
         return 1

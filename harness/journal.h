@@ -2,7 +2,8 @@
 // as each key finishes. It is what makes a sweep resumable and an interruption harmless: a line is
 // written with one write(2) to a file opened O_APPEND, so a finished key is in the file (the page
 // cache) even if the process is killed a moment later; a line torn by a machine crash does not parse
-// and is ignored when the journal is read. analysis/results.py assembles the JSON and CSV from it.
+// and is ignored when the journal is read. analysis/polydecomp_analysis/results.py assembles the JSON and
+// CSV from it.
 //
 // Lines: {"context": {...}} once per invocation (provenance); {"started": "key"} before a key runs, so
 // that a driver can tell which key a crashed process was running; and one Google Benchmark run object

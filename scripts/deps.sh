@@ -5,7 +5,7 @@ set -euo pipefail
 # the sanitizer build of `make test` and `make fuzz`, against the same libstdc++ as g++.
 packages=(build-essential clang libclang-rt-14-dev cmake git libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           libboost-program-options-dev libbenchmark-dev libgtest-dev googletest nlohmann-json3-dev
-          python3 python3-matplotlib python3-numpy)
+          python3 python3-matplotlib python3-numpy python3-flake8)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -8,7 +8,8 @@ cost is compared as a ratio.
 Piece bounds ("== n-2", "<= 4*OPT", ">= ceil(r/2)+1") are a relation and an expression over n, r and
 OPT, with ceil(x) and floor(x) too, evaluated exactly (no clamping).
 
-A text outside the grammar parses to None: no claim.
+A text outside the grammar parses to None: no claim. tests/data/bound_expr_vectors.json holds the time
+bounds this parser and core/bound_expr.h are both tested on.
 """
 
 import math

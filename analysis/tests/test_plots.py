@@ -2,9 +2,9 @@ import os
 import tempfile
 import unittest
 
-import bounds
-import plots
-import synthetic
+from polydecomp_analysis import bounds, plots
+
+from . import synthetic
 
 
 class PlotsTest(unittest.TestCase):

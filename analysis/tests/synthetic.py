@@ -15,19 +15,19 @@ import json
 
 REGISTRY = [
     {"name": "quad", "kind": "triangulation", "steiner": False, "optimal": False, "time_bound": "n^2",
-     "pieces_bound": "== n-2", "source": "synthetic", "size_ceiling": 100000},
+     "pieces_bound": "== n-2", "source": "synthetic", "peer": None, "size_ceiling": 100000},
     {"name": "liar", "kind": "triangulation", "steiner": False, "optimal": False, "time_bound": "n*log(n)",
-     "pieces_bound": "== n-2", "source": "synthetic", "size_ceiling": 100000},
+     "pieces_bound": "== n-2", "source": "synthetic", "peer": None, "size_ceiling": 100000},
     {"name": "nr2", "kind": "convex", "steiner": False, "optimal": False, "time_bound": "n*r^2",
-     "pieces_bound": "<= 4*OPT", "source": "synthetic", "size_ceiling": 100000},
+     "pieces_bound": "<= 4*OPT", "source": "synthetic", "peer": None, "size_ceiling": 100000},
     {"name": "tri", "kind": "triangulation", "steiner": False, "optimal": False, "time_bound": "n",
-     "pieces_bound": "== n-2", "source": "synthetic", "size_ceiling": 100000},
+     "pieces_bound": "== n-2", "source": "synthetic", "peer": None, "size_ceiling": 100000},
     {"name": "approx", "kind": "convex", "steiner": False, "optimal": False, "time_bound": "n",
-     "pieces_bound": "<= 4*OPT", "source": "synthetic", "size_ceiling": 100000},
+     "pieces_bound": "<= 4*OPT", "source": "synthetic", "peer": None, "size_ceiling": 100000},
     {"name": "opt", "kind": "convex", "steiner": False, "optimal": True, "time_bound": "n^4",
-     "pieces_bound": "== OPT", "source": "synthetic", "size_ceiling": 400},
+     "pieces_bound": "== OPT", "source": "synthetic", "peer": None, "size_ceiling": 400},
     {"name": "greedy", "kind": "convex", "steiner": True, "optimal": False, "time_bound": "n",
-     "pieces_bound": "== r+1", "source": "synthetic", "size_ceiling": 100000},
+     "pieces_bound": "== r+1", "source": "synthetic", "peer": None, "size_ceiling": 100000},
 ]
 
 SIZES = [100, 200, 400, 800, 1600, 3200]

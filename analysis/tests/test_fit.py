@@ -1,8 +1,7 @@
 import math
 import unittest
 
-import bound_expr
-import fit
+from polydecomp_analysis import bound_expr, fit
 
 
 def power_law(a, b, sizes, reflexes, noise=0.0):

@@ -1,4 +1,3 @@
-import contextlib
 import csv
 import io
 import json
@@ -7,10 +6,9 @@ import re
 import tempfile
 import unittest
 
-import merge
-import rejournal
-import results
-import synthetic
+from polydecomp_analysis import merge, rejournal, results
+
+from . import synthetic
 
 
 def write_lines(path, objects, torn=""):
@@ -93,13 +91,12 @@ class RejournalTest(unittest.TestCase):
 
     def test_leaves_out_the_keys_to_measure_again_and_keeps_the_provenance(self):
         left_out = self.runs[4]["name"]
-        with contextlib.redirect_stderr(io.StringIO()):
-            self.assertEqual(rejournal.main(["--sweep", "s", "--results", self.tmp.name,
-                                             "--remeasure", "^" + re.escape(left_out) + "$"]), 0)
+        self.assertEqual(rejournal.rejournal(self.tmp.name, "s", "^" + re.escape(left_out) + "$"), (5, 1))
         _, runs, _ = results.read_journal(self.stem + ".journal.jsonl")
         self.assertEqual(sorted(runs), sorted(r["name"] for r in self.runs if r["name"] != left_out))
         remeasured = dict(self.runs[4], cpu_time=1.0)
-        results.append_line(self.stem + ".journal.jsonl", {"context": {"sweep": "s", "date": "d3", "git_commit": "c" * 40}})
+        results.append_line(self.stem + ".journal.jsonl",
+                            {"context": {"sweep": "s", "date": "d3", "git_commit": "c" * 40}})
         results.append_line(self.stem + ".journal.jsonl", remeasured)
         self.assertEqual(results.assemble([self.stem + ".journal.jsonl"], self.stem), 6)
         with open(self.stem + ".json", encoding="utf-8") as f:
@@ -113,8 +110,7 @@ class RejournalTest(unittest.TestCase):
     def test_a_results_file_without_context_or_versions(self):
         with open(self.stem + ".json", "w", encoding="utf-8") as f:
             json.dump({"benchmarks": self.runs[:2]}, f)
-        with contextlib.redirect_stderr(io.StringIO()):
-            self.assertEqual(rejournal.main(["--sweep", "s", "--results", self.tmp.name]), 0)
+        self.assertEqual(rejournal.rejournal(self.tmp.name, "s", None), (2, 0))
         results.append_line(self.stem + ".journal.jsonl", {"context": {"sweep": "s", "git_commit": "c" * 40}})
         merged = results.merge_contexts([{"invocations": "0", "git_versions": ""}, {"git_commit": "c" * 40}])
         self.assertEqual((merged["invocations"], merged["git_versions"]), ("1", "cccccccccccc"))
@@ -122,9 +118,8 @@ class RejournalTest(unittest.TestCase):
 
     def test_refuses_to_replace_a_journal(self):
         write_lines(self.stem + ".journal.jsonl", [])
-        with contextlib.redirect_stderr(io.StringIO()) as err:
-            self.assertEqual(rejournal.main(["--sweep", "s", "--results", self.tmp.name]), 1)
-        self.assertIn("exists", err.getvalue())
+        with self.assertRaisesRegex(ValueError, "exists"):
+            rejournal.rejournal(self.tmp.name, "s", None)
 
 
 class MergeTest(unittest.TestCase):
@@ -140,8 +135,7 @@ class MergeTest(unittest.TestCase):
         self.tmp.cleanup()
 
     def test_merges_every_shard_in_sweep_order(self):
-        with contextlib.redirect_stderr(io.StringIO()):
-            self.assertEqual(merge.main(["--sweep", "s", "--results", self.tmp.name]), 0)
+        self.assertEqual(merge.merge_shards(self.tmp.name, "s"), (self.count, 3))
         with open(os.path.join(self.tmp.name, "s.json"), encoding="utf-8") as f:
             doc = json.load(f)
         self.assertEqual([b["key_index"] for b in doc["benchmarks"]], list(range(self.count)))

@@ -1,0 +1,169 @@
+import json
+import os
+import re
+import tempfile
+import unittest
+
+from polydecomp_analysis import bounds, fit, results
+
+from . import synthetic
+
+
+def row(markdown, section, first_cells):
+    """The cells of the first table row in `section` that starts with first_cells."""
+    text = markdown.split("## " + section, 1)[1].split("\n## ", 1)[0]
+    for line in text.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
+        if cells[:len(first_cells)] == first_cells:
+            return cells
+    raise AssertionError("no row {} in {}".format(first_cells, section))
+
+
+def time_row(rows, algorithm, family, counter=None):
+    return next(t for t in rows if (t.algorithm, t.family, t.counter) == (algorithm, family, counter))
+
+
+def curve(checked, label):
+    """The check of a time row along one curve of the sweep."""
+    return next(c for c in checked.checks if c.label == label)
+
+
+class SyntheticSweep(unittest.TestCase):
+    """bounds.md of the synthetic sweep, whose truth is known, and the rows it is rendered from."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.results_path = os.path.join(cls.tmp.name, "synthetic.json")
+        cls.registry_path = os.path.join(cls.tmp.name, "registry.json")
+        synthetic.write(cls.results_path, cls.registry_path)
+        cls.registry = bounds.load_registry(registry_file=cls.registry_path)
+        cls.runs = results.load(cls.results_path)[1]
+        out = os.path.join(cls.tmp.name, "bounds.md")
+        cls.times, cls.ops, pieces = bounds.write_bounds(cls.results_path, cls.registry, out)
+        cls.pieces = {p.algorithm: p for p in pieces}
+        with open(out, encoding="utf-8") as f:
+            cls.md = f.read()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+
+class BoundsTest(SyntheticSweep):
+    """The verdicts and figures bounds.py computes."""
+
+    def test_consistent_time_bound(self):
+        quad = time_row(self.times, "quad", "random")
+        self.assertEqual(quad.claim_text, "n^2")
+        self.assertEqual(quad.fit.names, ["a"])
+        self.assertAlmostEqual(quad.fit.value("a"), 2.0, places=2)
+        self.assertEqual(quad.verdict, "consistent")
+
+    def test_contradicted_time_bound(self):
+        liar = [t for t in self.times if t.algorithm == "liar"]
+        self.assertEqual([(t.family, t.contradicted) for t in liar], [("comb", True), ("random", True)])
+        on_random = curve(time_row(liar, "liar", "random"), "vs-n r=default")
+        self.assertAlmostEqual(on_random.fit.value("a"), 2.0, places=2)
+        self.assertAlmostEqual(fit.claim_along(on_random.claims, {"a": 1.0}), 1.14, places=2)
+        self.assertTrue(time_row(liar, "liar", "random").contradictions[0].startswith(
+            "vs-n r=default: fitted a=2.00 ±"))
+        verdict = bounds.summary_verdict(liar, self.pieces["liar"])
+        self.assertTrue(verdict.startswith("CONTRADICTED: time on 2 of 2 families (worst "), verdict)
+        self.assertIn(": fitted a=2.00 ±", verdict)
+        self.assertIn("vs claimed 1.1", verdict)
+
+    def test_both_exponents_where_the_design_separates_them(self):
+        opt = time_row(self.times, "opt", "random")
+        self.assertEqual(opt.fit.names, ["a", "b"])
+        self.assertAlmostEqual(opt.fit.value("a"), 1.0, places=2)
+        self.assertEqual(opt.verdict, "consistent (grows slower than claimed)")
+
+    def test_operation_counts_are_fitted(self):
+        liar = time_row(self.ops, "liar", "random", "steps")
+        self.assertTrue(liar.contradicted, liar.verdict)
+        self.assertAlmostEqual(liar.fit.value("a"), 2.0, places=2)
+        self.assertEqual(time_row(self.ops, "quad", "comb", "steps").verdict, "consistent")
+
+    def test_piece_bounds_and_ratios(self):
+        approx = self.pieces["approx"]
+        self.assertAlmostEqual(approx.worst_ratio, 401 / 101)  # 2r+1 against ceil(r/2)+1 at r=200
+        self.assertEqual(approx.verdict, "consistent")
+        greedy = self.pieces["greedy"]
+        self.assertEqual((len(greedy.violations), greedy.checked), (12, 36))
+        self.assertEqual({run.family for run, _ in greedy.violations}, {"comb"})
+        self.assertTrue(greedy.verdict.startswith("CONTRADICTED: 12 of 36 runs break == r+1"), greedy.verdict)
+        self.assertEqual(self.pieces["tri"].verdict, "consistent")
+
+    def test_invalid_and_skipped_runs_are_counted(self):
+        counts = self.pieces["opt"].counts
+        self.assertEqual([counts[s] for s in ("ok", "invalid", "failed", "skipped")], [23, 1, 0, 12])
+        invalid = [(run.name, run.reason) for run in self.runs if run.status == "invalid"]
+        self.assertEqual(invalid, [(synthetic.INVALID_KEY, "piece 3 is not convex at vertex 17")])
+
+    def test_each_algorithm_of_the_peers_kind_against_the_peer_on_the_same_polygons(self):
+        rows = bounds.peer_rows(self.runs, self.registry, peer="liar", sizes=(1600, 3200))
+        self.assertEqual(sorted({(r[0], r[1], r[2]) for r in rows}),
+                         [(a, f, n) for a in ("quad", "tri") for f in ("comb", "random") for n in (1600, 3200)])
+        tri = [r for r in rows if r[0] == "tri" and r[1] == "random" and r[2] == 3200][0]
+        self.assertEqual(tri[3:5], [800, 2])
+        self.assertAlmostEqual(tri[7], 3200)  # n^2 against n, the same jitter on each polygon
+        self.assertEqual(tri[8], 2)
+        quad = [r for r in rows if r[0] == "quad"]
+        self.assertTrue(all(abs(r[7] - 1) < 1e-12 and r[8] == 0 for r in quad))
+        summary = bounds.peer_summary(rows)
+        self.assertEqual([s[:3] for s in summary], [["quad", 4, 0], ["tri", 4, 0]])
+        self.assertTrue(summary[1][3].startswith("1600.00x ("), summary[1][3])  # the lowest, at n = 1600
+        slow = bounds.peer_rows(self.runs, self.registry, peer="tri", sizes=(3200,))
+        self.assertEqual(bounds.peer_summary(slow)[0][:3], ["liar", 2, 2])
+
+    def test_other_peers_are_not_set_against_the_peer(self):
+        registry = dict(self.registry, quad=dict(self.registry["quad"], peer="Synthetic 1.0"))
+        self.assertTrue(bounds.is_peer(registry["quad"]))
+        self.assertFalse(bounds.is_peer(registry["tri"]))
+        rows = bounds.peer_rows(self.runs, registry, peer="liar", sizes=(1600, 3200))
+        self.assertEqual({r[0] for r in rows}, {"tri"})
+
+    def test_a_registry_without_peer_fields_is_refused(self):
+        with open(self.registry_path, encoding="utf-8") as f:
+            entries = json.load(f)
+        old = os.path.join(self.tmp.name, "old-registry.json")
+        with open(old, "w", encoding="utf-8") as f:
+            json.dump(entries[:1] + [{k: v for k, v in a.items() if k != "peer"} for a in entries[1:]], f)
+        with self.assertRaisesRegex(ValueError, r'no "peer" field \(on liar, nr2, '):
+            bounds.load_registry(registry_file=old)
+
+    def test_an_invalid_result_is_not_a_reference(self):
+        best = bounds.best_pieces(self.runs, self.registry)
+        self.assertEqual(best[(("random", 200, 50, 1), "convex", False)], 101)  # opt's 26 was invalid
+        self.assertEqual(best[(("random", 200, 50, 2), "convex", False)], 26)
+
+
+class RenderingTest(SyntheticSweep):
+    """The markdown of bounds.md: each table's cells are the rows' figures, formatted."""
+
+    def test_time_table(self):
+        quad = time_row(self.times, "quad", "random")
+        self.assertEqual(row(self.md, "Time, per family", ["quad", "random"]),
+                         [quad.algorithm, quad.family, quad.claim_text, quad.fitted_text(), quad.claimed_text(),
+                          quad.points_text(), quad.verdict])
+        self.assertRegex(quad.fitted_text(), r"^a=2\.00 ± \d\.\d\d$")
+
+    def test_summary_table(self):
+        liar = [t for t in self.times if t.algorithm == "liar"]
+        cells = row(self.md, "Summary", ["liar"])
+        self.assertEqual(cells[1], "n*log(n)")
+        self.assertEqual(cells[-1], bounds.summary_verdict(liar, self.pieces["liar"]))
+
+    def test_pieces_table(self):
+        approx = row(self.md, "Pieces", ["approx"])
+        self.assertEqual(approx[1:], ["convex", "<= 4*OPT", "36", "0", "0", "0", "3.970", "consistent"])
+
+    def test_failures_table(self):
+        self.assertEqual(row(self.md, "Invalid and failed runs", ["opt", "invalid", synthetic.INVALID_KEY])[-1],
+                         "piece 3 is not convex at vertex 17")
+        self.assertRegex(self.md, re.compile(r"^\| algorithm \| status \| key \| reason \|$", re.MULTILINE))
+
+
+if __name__ == "__main__":
+    unittest.main()
