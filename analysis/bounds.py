@@ -9,7 +9,7 @@ usage: bounds.py RESULTS.json [--polydecomp build/polydecomp | --registry LIST.j
 import argparse
 import sys
 
-from polydecomp_analysis import bounds
+from polydecomp_analysis import bounds, plugins
 
 
 def main(argv=None):
@@ -17,8 +17,11 @@ def main(argv=None):
     parser.add_argument("results", help="an assembled results file, e.g. results/quick.json")
     parser.add_argument("--polydecomp", default="build/polydecomp", help="the command line, for the claims")
     parser.add_argument("--registry", help="a saved `polydecomp list --json` output, instead of running it")
+    parser.add_argument("--plugins", action="append", default=[],
+                        help="a folder of external algorithms' manifests (any number of times)")
     parser.add_argument("-o", "--output", default="results/bounds.md")
     args = parser.parse_args(argv)
+    plugins.use_plugins(args.plugins)
     try:
         registry = bounds.load_registry(args.polydecomp, args.registry)
     except ValueError as e:

@@ -10,7 +10,7 @@ usage: plots.py RESULTS.json [--polydecomp build/polydecomp | --registry LIST.js
 import argparse
 import sys
 
-from polydecomp_analysis import bounds, plots
+from polydecomp_analysis import bounds, plots, plugins
 
 
 def main(argv=None):
@@ -18,9 +18,12 @@ def main(argv=None):
     parser.add_argument("results", help="an assembled results file, e.g. results/quick.json")
     parser.add_argument("--polydecomp", default="build/polydecomp")
     parser.add_argument("--registry", help="a saved `polydecomp list --json` output, instead of running it")
+    parser.add_argument("--plugins", action="append", default=[],
+                        help="a folder of external algorithms' manifests (any number of times)")
     parser.add_argument("-o", "--output", default="results/plots")
     parser.add_argument("--gallery", default="random:40:12:1", help="FAMILY:N:R:SEED, or 'none'")
     args = parser.parse_args(argv)
+    plugins.use_plugins(args.plugins)
     try:
         registry = bounds.load_registry(args.polydecomp, args.registry)
     except ValueError as e:

@@ -5,7 +5,8 @@ files, then (for a whole sweep) the bounds table and the plots.
 polydecomp_analysis/sweep.py says how it keeps polydecomp-bench going when a key ends the process. An
 interrupt (Ctrl-C, SIGTERM) stops it; run the same command again to resume.
 
-usage: sweep.py --sweep NAME [--shard I/K] [--build DIR] [--results DIR] [--no-analysis]
+usage: sweep.py --sweep NAME [--sweeps FILE] [--shard I/K] [--build DIR] [--results DIR] [--no-analysis]
+                [--plugins DIR]...
                 [-- extra polydecomp-bench arguments]
 """
 
@@ -14,7 +15,7 @@ import os
 import sys
 import time
 
-from polydecomp_analysis import results, sweep
+from polydecomp_analysis import plugins, results, sweep
 
 
 def main(argv=None):
@@ -25,9 +26,12 @@ def main(argv=None):
     parser.add_argument("--build", default="build")
     parser.add_argument("--results", default="results")
     parser.add_argument("--gallery", default="random:40:12:1", help="FAMILY:N:R:SEED of the gallery polygon")
+    parser.add_argument("--plugins", action="append", default=[],
+                        help="a folder of external algorithms' manifests (any number of times)")
     parser.add_argument("--no-analysis", action="store_true", help="only run the sweep and write JSON and CSV")
     parser.add_argument("bench_args", nargs="*", help="after --: more polydecomp-bench arguments")
     args = parser.parse_args(argv)
+    plugins.use_plugins(args.plugins)
 
     start = time.monotonic()
     try:

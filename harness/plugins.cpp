@@ -245,7 +245,7 @@ Rational coordinate(const Json& v) {
     const std::size_t slash = v.text.find('/');
     const std::string num = v.text.substr(0, slash), den = slash == std::string::npos ? "1" : v.text.substr(slash + 1);
     if (digits(num, num[0] == '-' ? 1 : 0) && digits(den, 0) && den.find_first_not_of('0') != std::string::npos)
-      return Rational(num + "/" + den);
+      return Rational(num) / Rational(den);  // the quotient is canonical, whatever the digits
   }
   throw std::invalid_argument("a coordinate is a number or a string \"p/q\"");
 }

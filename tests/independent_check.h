@@ -6,7 +6,7 @@
 // inside a piece, no piece edge properly crossing a polygon edge, an interior point inside the
 // polygon), and the areas add up. For other pieces (y-monotone) it checks simplicity by brute force,
 // the areas, and that sample points strictly inside the polygon lie strictly inside exactly one piece.
-// Quadratic and worse: for small polygons only.
+// Quadratic and worse (bounding boxes prune the pairs they decide): for small polygons only.
 #pragma once
 
 #include "core/geometry.h"
@@ -64,8 +64,11 @@ inline int locate(const Cycle& c, const QPoint& q) {
   bool inside = false;
   for (std::size_t i = 0; i < c.size(); ++i) {
     const QPoint &a = c[i], &b = c[(i + 1) % c.size()];
-    if (on_segment(a, b, q)) return 0;
-    if ((a.y() > q.y()) != (b.y() > q.y())) {
+    const bool above_a = a.y() > q.y(), above_b = b.y() > q.y();
+    // on_segment needs q within the edge's box: the y test first, as most edges fail it
+    const bool in_y_range = (a.y() >= q.y() || b.y() >= q.y()) && (a.y() <= q.y() || b.y() <= q.y());
+    if (in_y_range && on_segment(a, b, q)) return 0;
+    if (above_a != above_b) {
       const int t = turn(a, b, q);
       if ((b.y() > a.y() && t > 0) || (b.y() < a.y() && t < 0)) inside = !inside;
     }
@@ -86,6 +89,33 @@ inline bool simple_brute(const Cycle& c) {
   return area2(c) > 0;
 }
 
+// The closed bounding box of a cycle: a point outside it is outside the cycle, and two cycles with
+// disjoint boxes share no point. The checks below skip pairs that their boxes already decide.
+struct Box {
+  Rational x0, x1, y0, y1;
+};
+
+inline Box box_of(const Cycle& c) {
+  Box b{c[0].x(), c[0].x(), c[0].y(), c[0].y()};
+  for (const QPoint& q : c) {
+    b.x0 = std::min(b.x0, q.x()), b.x1 = std::max(b.x1, q.x());
+    b.y0 = std::min(b.y0, q.y()), b.y1 = std::max(b.y1, q.y());
+  }
+  return b;
+}
+
+inline bool contains(const Box& b, const QPoint& q) {
+  return b.x0 <= q.x() && q.x() <= b.x1 && b.y0 <= q.y() && q.y() <= b.y1;
+}
+
+inline bool disjoint(const Box& a, const Box& b) { return a.x1 < b.x0 || b.x1 < a.x0 || a.y1 < b.y0 || b.y1 < a.y0; }
+
+inline std::vector<Box> boxes_of(const std::vector<Cycle>& cycles) {
+  std::vector<Box> boxes;
+  for (const Cycle& c : cycles) boxes.push_back(box_of(c));
+  return boxes;
+}
+
 inline QPoint centroid(const Cycle& c) {
   Rational x = 0, y = 0;
   for (const QPoint& q : c) x += q.x(), y += q.y();
@@ -93,8 +123,9 @@ inline QPoint centroid(const Cycle& c) {
 }
 
 inline bool samples_covered_once(const Cycle& polygon, const std::vector<Cycle>& pieces) {
-  Rational x0 = polygon[0].x(), x1 = x0, y0 = polygon[0].y(), y1 = y0;
-  for (const QPoint& q : polygon) x0 = std::min(x0, q.x()), x1 = std::max(x1, q.x()), y0 = std::min(y0, q.y()), y1 = std::max(y1, q.y());
+  const Box outline = box_of(polygon);
+  const Rational &x0 = outline.x0, &x1 = outline.x1, &y0 = outline.y0, &y1 = outline.y1;
+  const std::vector<Box> boxes = boxes_of(pieces);
   const int steps = 23;
   for (int i = 1; i < steps; ++i)
     for (int j = 1; j < steps; ++j) {
@@ -102,8 +133,9 @@ inline bool samples_covered_once(const Cycle& polygon, const std::vector<Cycle>&
       const int where = locate(polygon, q);
       if (where == 0) continue;
       int strictly = 0, touching = 0;
-      for (const Cycle& piece : pieces) {
-        const int w = locate(piece, q);
+      for (std::size_t k = 0; k < pieces.size(); ++k) {
+        if (!contains(boxes[k], q)) continue;
+        const int w = locate(pieces[k], q);
         strictly += w == 1, touching += w == 0;
       }
       if (touching) continue;
@@ -122,16 +154,22 @@ inline bool tiles(const Cycle& polygon, const std::vector<Cycle>& pieces, bool c
   if (total != area2(polygon)) return false;
   if (!samples_covered_once(polygon, pieces)) return false;
   if (!convex) return true;
+  // Two convex pieces with disjoint boxes are disjoint, and then one of their edge lines separates them
+  // (the separating axis theorem), so `separated` would hold; a vertex outside a piece's box is not
+  // inside it, and an edge whose box misses the piece's cannot cross it.
+  const std::vector<Box> boxes = boxes_of(pieces);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     for (std::size_t j = i + 1; j < pieces.size(); ++j)
-      if (!separated(pieces[i], pieces[j])) return false;
+      if (!disjoint(boxes[i], boxes[j]) && !separated(pieces[i], pieces[j])) return false;
     if (locate(polygon, centroid(pieces[i])) != 1) return false;
     for (const QPoint& v : polygon)
-      if (locate(pieces[i], v) == 1) return false;
-    for (std::size_t a = 0; a < pieces[i].size(); ++a)
-      for (std::size_t b = 0; b < polygon.size(); ++b)
-        if (proper_cross(pieces[i][a], pieces[i][(a + 1) % pieces[i].size()], polygon[b], polygon[(b + 1) % polygon.size()]))
-          return false;
+      if (contains(boxes[i], v) && locate(pieces[i], v) == 1) return false;
+    for (std::size_t b = 0; b < polygon.size(); ++b) {
+      const QPoint &e0 = polygon[b], &e1 = polygon[(b + 1) % polygon.size()];
+      if (disjoint(boxes[i], box_of({e0, e1}))) continue;
+      for (std::size_t a = 0; a < pieces[i].size(); ++a)
+        if (proper_cross(pieces[i][a], pieces[i][(a + 1) % pieces[i].size()], e0, e1)) return false;
+    }
   }
   return true;
 }

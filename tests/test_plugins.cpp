@@ -14,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace pd {
 namespace {
@@ -177,20 +178,21 @@ TEST_F(Plugins, ABrokenManifestIsNamed) {
   EXPECT_EQ(missing.err, "error: " + (dir_ / "no-such-folder").string() + ": not a folder of plug-in manifests\n");
 }
 
-TEST_F(Plugins, AreBenchmarkedByTheHarness) {
-  std::ofstream(dir_ / "sweeps.json")
-      << "{\"tiny\": {\"description\": \"the example plug-in on convex polygons\", \"algorithms\": [\"example-fan\"], "
+// A sweep of the example plug-in on convex polygons (taken) and combs (refused before running).
+void write_tiny_sweep(const fs::path& file) {
+  std::ofstream(file)
+      << "{\"tiny\": {\"description\": \"the example plug-in\", \"algorithms\": [\"example-fan\"], "
          "\"seeds\": [1], \"min_time\": 0.001, \"budget_seconds\": 1, \"timeout_seconds\": 20, "
          "\"curves\": [{\"vs\": \"n\", \"families\": [\"convex\", \"comb\"], \"r\": [\"default\"], \"n\": [20, 40]}]}}\n";
-  const Result r = run(PD_BENCH, "--sweep tiny --sweeps " + (dir_ / "sweeps.json").string() + " --out " +
-                                     dir_.string() + " --plugins " + (dir_ / "plugins").string());
-  ASSERT_EQ(r.status, 0) << r.err;
-  std::ifstream journal(dir_ / "tiny.journal.jsonl");
+}
+
+// The records of a journal or of an assembled results file's "benchmarks": 2 ok, 2 refused.
+void expect_tiny_sweep_results(const std::vector<Json>& records) {
   int ok = 0, refused = 0;
-  for (std::string line; std::getline(journal, line);) {
-    const Json j = parse_json(line);
+  for (const Json& j : records) {
     const Json* status = j.get("status");
     if (status == nullptr) continue;
+    const std::string line = j.get("name")->text;
     if (status->text == "ok") {
       ++ok;
       EXPECT_EQ(j.get("valid")->number(), 1) << line;
@@ -202,6 +204,27 @@ TEST_F(Plugins, AreBenchmarkedByTheHarness) {
   }
   EXPECT_EQ(ok, 2);       // convex n = 20, 40
   EXPECT_EQ(refused, 2);  // comb n = 20, 40: skipped before running
+}
+
+TEST_F(Plugins, AreBenchmarkedByTheHarness) {
+  write_tiny_sweep(dir_ / "sweeps.json");
+  const Result r = run(PD_BENCH, "--sweep tiny --sweeps " + (dir_ / "sweeps.json").string() + " --out " +
+                                     dir_.string() + " --plugins " + (dir_ / "plugins").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream journal(dir_ / "tiny.journal.jsonl");
+  std::vector<Json> records;
+  for (std::string line; std::getline(journal, line);) records.push_back(parse_json(line));
+  expect_tiny_sweep_results(records);
+}
+
+TEST_F(Plugins, AreSweptBySweepPy) {
+  write_tiny_sweep(dir_ / "sweeps.json");
+  const std::string build = fs::path(PD_CLI).parent_path().string();
+  const Result r = run("/usr/bin/python3 " PD_SOURCE_DIR "/analysis/sweep.py",
+                       "--sweep tiny --sweeps " + (dir_ / "sweeps.json").string() + " --build " + build +
+                           " --results " + dir_.string() + " --no-analysis --plugins " + (dir_ / "plugins").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_tiny_sweep_results(parse_json(slurp(dir_ / "tiny.json")).get("benchmarks")->items);
 }
 
 }  // namespace
