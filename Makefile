@@ -30,7 +30,7 @@ test: deps
 	@cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS)
 
 sanitize-build:
-	@cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target polydecomp polydecomp-tests fuzz-targets
+	@cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target polydecomp polydecomp-bench polydecomp-tests fuzz-targets
 
 # Each fuzz target for FUZZ_SECONDS (default 600) from a random seed; findings go to
 # build-sanitize/fuzz-findings/ (replay one: build-sanitize/fuzz-run FILE).

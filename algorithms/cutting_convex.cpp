@@ -25,8 +25,8 @@
 // - Ray hits are compared exactly, as rationals; every other test is an orientation.
 // - A part's notches are resolved one at a time: the one or two diagonals from a notch are applied at
 //   once (two or three parts), and the parts are then resolved recursively.
-#include "engines/cutting/polygon_cutting.h"
 #include "core/registry.h"
+#include "engines/cutting/polygon_cutting.h"
 
 #include <algorithm>
 #include <numeric>

@@ -14,8 +14,8 @@
 // vertex whose closed triangle holds no other vertex of the part (one always exists). Parts are
 // sub-cycles of the top polygon carrying LH and LV restricted to them, so no polygon is rebuilt or
 // checked again.
-#include "engines/cutting/polygon_cutting.h"
 #include "core/registry.h"
+#include "engines/cutting/polygon_cutting.h"
 
 #include <algorithm>
 

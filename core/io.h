@@ -8,7 +8,6 @@
 
 #include "core/decomposition.h"
 #include "core/polygon.h"
-#include "core/decomposition.h"
 #include "core/validate.h"
 
 #include <optional>

@@ -11,7 +11,6 @@
 
 #include "core/decomposition.h"
 #include "core/polygon.h"
-#include "core/decomposition.h"
 
 #include <string>
 #include <vector>

@@ -10,8 +10,8 @@
 // algorithm's own where the sweep gives it one.
 #pragma once
 
-#include "core/registry.h"
 #include "core/bound_expr.h"
+#include "core/registry.h"
 
 #include <cstddef>
 #include <map>

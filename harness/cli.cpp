@@ -3,11 +3,11 @@
 // Exit status: 0 success, 2 bad usage, 3 bad polygon, 4 an algorithm failed (or `run --max-seconds`
 // stopped it). Every failure prints one line on stderr beginning "error:" and nothing on stdout; output
 // is assembled completely before any of it is written, so a failure never leaves partial output.
-#include "engines/cutting/polygon_cutting.h"
 #include "core/io.h"
 #include "core/json.h"
 #include "core/registry.h"
 #include "core/validate.h"
+#include "engines/cutting/polygon_cutting.h"
 #include "generators/family.h"
 #include "harness/large_stack.h"
 #include "harness/plugins.h"

@@ -11,6 +11,10 @@
 
 #include "core/geometry.h"
 
+#include <algorithm>
+#include <map>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace pd::independent {
@@ -172,6 +176,34 @@ inline bool tiles(const Cycle& polygon, const std::vector<Cycle>& pieces, bool c
     }
   }
   return true;
+}
+
+// A cycle as text, from its least point on, so that the same cycle from any starting vertex reads the
+// same.
+inline std::string canonical_text(const Cycle& c) {
+  const auto least = std::min_element(c.begin(), c.end(), [](const QPoint& a, const QPoint& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  std::ostringstream text;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const QPoint& q = c[(static_cast<std::size_t>(least - c.begin()) + i) % c.size()];
+    text << q.x() << ' ' << q.y() << ';';
+  }
+  return text.str();
+}
+
+// `tiles`, computed once per (polygon, piece set) in a process: the same pieces of the same polygon,
+// whichever algorithm, rotation or vertex order produced them, are checked once.
+inline bool tiles_once(const Cycle& polygon, const std::vector<Cycle>& pieces, bool convex) {
+  static std::map<std::string, bool> known;
+  std::vector<std::string> piece_texts;
+  for (const Cycle& piece : pieces) piece_texts.push_back(canonical_text(piece));
+  std::sort(piece_texts.begin(), piece_texts.end());
+  std::string key = canonical_text(polygon) + (convex ? "|convex|" : "|any|");
+  for (const std::string& t : piece_texts) key += t + "|";
+  const auto found = known.find(key);
+  if (found != known.end()) return found->second;
+  return known[key] = tiles(polygon, pieces, convex);
 }
 
 }  // namespace pd::independent

@@ -9,10 +9,10 @@
 // known behaviour, recorded and not a finding.
 #pragma once
 
+#include "core/bound_expr.h"
 #include "core/io.h"
 #include "core/registry.h"
 #include "core/validate.h"
-#include "core/bound_expr.h"
 
 #include <optional>
 #include <string>

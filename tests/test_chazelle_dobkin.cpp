@@ -14,13 +14,13 @@
 // Lemma 9 check, Theorem 18's claim on samples); the rows E and W themselves, every entry against that
 // brute force given the program's S; every row against walks that test P4 with the segment search; and
 // the counters the time bound rests on.
-#include "engines/chazelle_dobkin/patterns.h"
-#include "engines/chazelle_dobkin/tables.h"
-#include "engines/chazelle_dobkin/geodesics.h"
-#include "engines/keil_snoeyink/stacks.h"
-#include "engines/naive/naive.h"
 #include "core/registry.h"
 #include "core/validate.h"
+#include "engines/chazelle_dobkin/geodesics.h"
+#include "engines/chazelle_dobkin/patterns.h"
+#include "engines/chazelle_dobkin/tables.h"
+#include "engines/keil_snoeyink/stacks.h"
+#include "engines/naive/naive.h"
 #include "generators/family.h"
 #include "generators/rng.h"
 #include "tests/brute_force.h"

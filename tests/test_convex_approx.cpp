@@ -3,9 +3,9 @@
 // edge, through collinear vertices, through an earlier Steiner point, onto an unresolved notch), then
 // every generator family: exact validity, exactly r + 1 pieces with degree <= 3 for the naive pair,
 // Theorem 3's pseudo-notch bound, the Hertel-Mehlhorn bound 2r + 1.
-#include "engines/naive/naive.h"
 #include "core/registry.h"
 #include "core/validate.h"
+#include "engines/naive/naive.h"
 #include "generators/family.h"
 #include "tests/fixtures.h"
 #include "tests/same_decomposition.h"

@@ -2,10 +2,10 @@
 // every cut is a true diagonal, judged with exact rationals and none of the project's predicates, and
 // both its parts weigh at most 2C/3; cutting-convex stays under 13/3 of the best optimal count; the
 // work per cut is linear in n (counts, not time); `polydecomp cut` keeps docs/CONTRACT.md.
-#include "engines/cutting/polygon_cutting.h"
 #include "core/json.h"
 #include "core/registry.h"
 #include "core/validate.h"
+#include "engines/cutting/polygon_cutting.h"
 #include "generators/family.h"
 #include "tests/fixtures.h"
 #include "tests/independent_check.h"

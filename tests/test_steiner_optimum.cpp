@@ -231,8 +231,10 @@ std::vector<const Algorithm*> steiner_optimal_programs() {
 // A count below the checker's with a valid result would mean a pattern the checker does not search
 // (see its header); a count above it, a program missing the witness's patterns.
 void expect_programs_agree(const Polygon& p, std::size_t best, const std::string& label) {
+  std::size_t ran = 0;
   for (const Algorithm* a : steiner_optimal_programs()) {
     if (!reliability::takes(*a, p)) continue;
+    ++ran;
     Counters counters;
     const Decomposition d = a->run(p, counters);
     const Validation valid = validate(p, d, a->kind, a->steiner);
@@ -241,6 +243,7 @@ void expect_programs_agree(const Polygon& p, std::size_t best, const std::string
       EXPECT_EQ(pieces_of(p, d).size(), best) << a->name << " on " << label;
     }
   }
+  EXPECT_GT(ran, 0u) << label;
 }
 
 // Expected to fail while no optimal program with Steiner points is registered.

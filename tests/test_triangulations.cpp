@@ -2,10 +2,10 @@
 // clippers: collinear (180-degree) vertices, horizontal edges, many vertices at one height, spikes,
 // and random lattice polygons (polyominoes under integer shears, every lattice point of the boundary
 // kept), checked with the exact validator.
-#include "engines/triangulation/diagonal_test.h"
-#include "engines/triangulation/monotone.h"
 #include "core/registry.h"
 #include "core/validate.h"
+#include "engines/triangulation/diagonal_test.h"
+#include "engines/triangulation/monotone.h"
 
 #include <gtest/gtest.h>
 

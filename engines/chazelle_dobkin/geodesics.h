@@ -45,9 +45,9 @@
 // search compares positions along a line exactly.
 #pragma once
 
-#include "engines/search/boundary_chains.h"
 #include "core/filtered.h"
 #include "core/geometry.h"
+#include "engines/search/boundary_chains.h"
 
 #include <algorithm>
 #include <array>

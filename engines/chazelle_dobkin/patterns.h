@@ -101,8 +101,8 @@
 // Exact: every test is an orientation on exact rationals; Steiner points are exact rationals.
 #pragma once
 
-#include "engines/search/boundary_chains.h"
 #include "core/decomposition.h"
+#include "engines/search/boundary_chains.h"
 
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Simple_cartesian.h>

@@ -32,8 +32,8 @@
 // pieces' vertex lists.
 #pragma once
 
-#include "engines/search/visibility.h"
 #include "core/decomposition.h"
+#include "engines/search/visibility.h"
 
 #include <algorithm>
 #include <cstdint>

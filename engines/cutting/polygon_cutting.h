@@ -10,8 +10,8 @@
 // tips of a dart), so it is refused.
 #pragma once
 
-#include "core/polygon.h"
 #include "core/decomposition.h"
+#include "core/polygon.h"
 
 #include <cstdint>
 #include <optional>

@@ -41,8 +41,8 @@
 // link table and O(n r^2) for the fronts in the worst case.
 #pragma once
 
-#include "engines/search/visibility.h"
 #include "core/decomposition.h"
+#include "engines/search/visibility.h"
 
 #include <algorithm>
 #include <cstdint>

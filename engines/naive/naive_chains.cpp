@@ -14,8 +14,8 @@
 // The chains are the thesis's (greedy, maximal); building them skips the tests of the closing angles
 // where they provably pass (see boundary_chains.cpp), so that the O(n) pass costs about one predicate per
 // vertex: it is what this algorithm spends most of its time on when r is small.
-#include "engines/search/boundary_chains.h"
 #include "engines/naive/naive.h"
+#include "engines/search/boundary_chains.h"
 
 #include <algorithm>
 #include <utility>

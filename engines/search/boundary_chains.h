@@ -11,8 +11,8 @@
 // r notches (Theorem 3), found in one O(n) pass.
 #pragma once
 
-#include "core/filtered.h"
 #include "core/decomposition.h"
+#include "core/filtered.h"
 
 #include <CGAL/Bbox_2.h>
 
