@@ -13,7 +13,6 @@
 #include <array>
 #include <cstdint>
 #include <optional>
-#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -27,20 +26,7 @@ class LooseRays {
  public:
   using Place = boundary::SegmentSearch::Contact;
 
-  LooseRays(const Polygon& p, const Patterns& patterns) : p_(p), count_(2 * static_cast<int>(patterns.notches().size())) {
-    shoot(p, patterns);
-    const std::size_t cells = static_cast<std::size_t>(count_) * static_cast<std::size_t>(count_);
-    cross_sign_.assign(cells, 0);
-    base_side_.assign(cells, 0);
-    meet_sign_.assign(cells, 0);
-    key_.assign(cells, -1);
-    opens_.assign(cells, 0);
-    made_at_.assign(cells, -1);
-    std::vector<Rational> meet(cells);
-    for (int a = 0; a < count_; ++a)
-      for (int b = 0; b < count_; ++b) relate(a, b, meet);
-    for (int a = 0; a < count_; ++a) list_loose_points(a, sorted_along(a, meet), meet);
-  }
+  LooseRays(const Polygon& p, const Patterns& patterns);
 
   static int notch(int ray) { return ray / 2; }
   // sign(u_a x u_b): +1 when b's direction turns counter-clockwise from a's.
@@ -52,10 +38,7 @@ class LooseRays {
   int meet_sign(int a, int b) const { return meet_sign_[cell(a, b)]; }
   // Which side of the directed line of a the point where b's line meets c's lies on: +1 left, -1 right,
   // 0 on it. O(1): a threshold on b's line, or a constant when a and b are parallel.
-  int side(int a, int b, int c) const {
-    const int s = cross_sign(a, b);
-    return s == 0 ? base_side_[cell(a, b)] : s * compare(key(b, c), key(b, a));
-  }
+  int side(int a, int b, int c) const;
   // sign(u_a x (z_b - z_a)): which side of a's line b's notch lies on.
   int base_side(int a, int b) const { return base_side_[cell(a, b)]; }
   // Whether the lines of a and b meet strictly inside both clipped rays (a loose point, the thesis's
@@ -65,34 +48,16 @@ class LooseRays {
   bool loose(int a, int b) const { return opens_[cell(a, b)] != kApart; }
   // The loose points on a, in order along it: the rays b whose lines meet a's strictly inside both.
   const std::vector<int>& along(int a) const { return along_[a]; }
-  QPoint point(int a, int b) const {
-    const Rational s = parameter(a, b);
-    return origin_[a] + s * direction_[a];
-  }
+  QPoint point(int a, int b) const;
   // The loose point of a and b, made the first time it is asked for (an exact division; scans ask for
   // each many times).
-  const FilteredPoint& loose_point(int a, int b) {
-    std::optional<FilteredPoint>& made = made_[static_cast<std::size_t>(made_at_[cell(a, b)])];
-    if (!made) made.emplace(point(a, b));
-    return *made;
-  }
+  const FilteredPoint& loose_point(int a, int b);
   // The ray ends as terminals of geodesics (geodesics.h): 2a is ray a's notch, 2a + 1 its far end.
-  std::vector<Place> terminals() const {
-    std::vector<Place> out;
-    for (int a = 0; a < count_; ++a) out.insert(out.end(), {start_[a], end_[a]});
-    return out;
-  }
+  std::vector<Place> terminals() const;
   // The terminal of ray a's notch (end 0, the same for both rays of a notch) or far end (end 1).
-  static std::size_t terminal(int a, int end) {
-    return end == 0 ? 2 * static_cast<std::size_t>(a & ~1) : 2 * static_cast<std::size_t>(a) + 1;
-  }
+  static std::size_t terminal(int a, int end);
   // Whether an end of ray a is an end of ray b (neither comes before the other on the boundary).
-  bool share_an_end(int a, int b) const {
-    for (const Place* x : {&start_[a], &end_[a]})
-      for (const Place* y : {&start_[b], &end_[b]})
-        if (!Place::before(p_, *x, *y) && !Place::before(p_, *y, *x)) return true;
-    return false;
-  }
+  bool share_an_end(int a, int b) const;
   std::int64_t stopped_at_vertices() const { return std::count(at_vertex_.begin(), at_vertex_.end(), 1); }
   std::int64_t loose_points() const { return loose_points_; }
 
@@ -107,73 +72,19 @@ class LooseRays {
   std::size_t cell(int a, int b) const { return static_cast<std::size_t>(a) * count_ + b; }
 
   // Each ray's direction and reach (the parameter of its first contact): O(r log n) per ray.
-  void shoot(const Polygon& p, const Patterns& patterns) {
-    RayShooter shooter(p);
-    for (int a = 0; a < count_; ++a) {
-      const std::size_t v = patterns.notches()[static_cast<std::size_t>(notch(a))];
-      const std::size_t away = a % 2 == 0 ? p.next(v) : p.prev(v);
-      const QPoint z = to_exact(p[v]);
-      const Vec u = z - to_exact(p[away]);
-      const auto hit = shooter.shoot(v, away, false);
-      if (!hit) throw std::logic_error("chazelle-dobkin: a notch's loose ray leaves the polygon");
-      const Rational reach = hit_parameter(p, z, u, *hit);
-      origin_.push_back(z);
-      direction_.push_back(u);
-      reach_.push_back(reach);
-      at_vertex_.push_back(hit->at_vertex ? 1 : 0);
-      start_.push_back({v, true, z});
-      end_.push_back({hit->vertex, hit->at_vertex, hit->at_vertex ? to_exact(p[hit->vertex]) : z + reach * u});
-    }
-  }
+  void shoot(const Polygon& p, const Patterns& patterns);
 
   // Where b's line crosses a's, as a parameter along a (z_a + s u_a). Pre: not parallel.
-  Rational parameter(int a, int b) const {
-    const Vec& ub = direction_[b];
-    return -CGAL::determinant(ub, origin_[a] - origin_[b]) / CGAL::determinant(ub, direction_[a]);
-  }
+  Rational parameter(int a, int b) const;
 
   // The O(1) facts about a pair of rays, computed once: O(r^2) in all.
-  void relate(int a, int b, std::vector<Rational>& meet) {
-    const std::size_t c = cell(a, b);
-    cross_sign_[c] = static_cast<std::int8_t>(CGAL::sign(CGAL::determinant(direction_[a], direction_[b])));
-    base_side_[c] = static_cast<std::int8_t>(CGAL::sign(CGAL::determinant(direction_[a], origin_[b] - origin_[a])));
-    if (notch(a) == notch(b) || cross_sign_[c] == 0) return;
-    meet[c] = parameter(a, b);
-    meet_sign_[c] = static_cast<std::int8_t>(CGAL::sign(meet[c]));
-  }
+  void relate(int a, int b, std::vector<Rational>& meet);
 
   // The rays whose lines cross a's, in order along a, with their ranks: O(r log r).
-  std::vector<int> sorted_along(int a, const std::vector<Rational>& meet) {
-    std::vector<int> rays;
-    for (int b = 0; b < count_; ++b)
-      if (notch(a) != notch(b) && cross_sign(a, b) != 0) rays.push_back(b);
-    std::sort(rays.begin(), rays.end(), [&](int x, int y) { return meet[cell(a, x)] < meet[cell(a, y)]; });
-    int rank = -1;
-    for (std::size_t k = 0; k < rays.size(); ++k) {
-      if (k == 0 || meet[cell(a, rays[k - 1])] < meet[cell(a, rays[k])]) ++rank;
-      key_[cell(a, rays[k])] = rank;
-    }
-    return rays;
-  }
+  std::vector<int> sorted_along(int a, const std::vector<Rational>& meet);
 
   // The loose points on a, in order along it.
-  void list_loose_points(int a, const std::vector<int>& sorted, const std::vector<Rational>& meet) {
-    std::vector<int> points;
-    for (int b : sorted) {
-      const Rational &s = meet[cell(a, b)], &t = meet[cell(b, a)];
-      if (s <= 0 || s >= reach_[a] || t <= 0 || t >= reach_[b]) continue;
-      const QPoint x = origin_[a] + s * direction_[a];
-      opens_[cell(a, b)] = orient(x, origin_[a], origin_[b]) > 0 ? kOpens : kLoose;
-      if (made_at_[cell(b, a)] < 0) {
-        made_at_[cell(b, a)] = static_cast<int>(made_.size());
-        made_.emplace_back();
-      }
-      made_at_[cell(a, b)] = made_at_[cell(b, a)];
-      points.push_back(b);
-      loose_points_ += a < b;
-    }
-    along_.push_back(std::move(points));
-  }
+  void list_loose_points(int a, const std::vector<int>& sorted, const std::vector<Rational>& meet);
 
   const Polygon& p_;
   int count_;
@@ -204,36 +115,13 @@ class ProgramCubic final : public Program {
   // hold the rows of the first against: both must find the same witness for every entry).
   enum class P4Test { kGeodesics, kSegmentSearch };
 
-  explicit ProgramCubic(const Polygon& p, P4Test p4_test = P4Test::kGeodesics)
-      : Program(p), notch_count_(checked(patterns().notches().size())), rays_(p, patterns()),
-        rows_(static_cast<std::size_t>(notch_count_) * static_cast<std::size_t>(notch_count_)), p4_test_(p4_test) {}
+  explicit ProgramCubic(const Polygon& p, P4Test p4_test = P4Test::kGeodesics);
 
-  void report(Counters& counters) const {
-    counters["x4_loose_points"] = rays_.loose_points();
-    counters["x4_table_entries"] = table_entries_;
-    counters["x4_table_witnesses"] = table_witnesses_;
-    counters["x4_found"] += table_witnesses_;
-    counters["x4_scan_steps"] = scan_steps_;
-    counters["x4_p4_tests"] = p4_tests_;
-    counters["x4_scans_sharing_an_end"] = scans_sharing_an_end_;
-    counters["x4_lookup_steps"] = lookup_steps_;
-    counters["x4_chosen"] = chosen_;
-    counters["x4_chosen_from_w"] = chosen_from_w_;
-    counters["x4_rays_at_vertex"] = rays_.stopped_at_vertices();
-    counters["x4_funnel_points"] = funnel_points_;
-    counters["x4_funnel_steps"] = funnel_steps_;
-    counters["geodesic_chords"] = geodesics_ ? geodesics_->chords() : 0;
-    counters["geodesic_trees"] = geodesics_ ? geodesics_->trees() : 0;
-    counters["geodesic_faces"] = geodesics_ ? geodesics_->faces_entered() : 0;
-    counters["geodesic_tangent_steps"] = geodesics_ ? geodesics_->tangent_steps() : 0;
-  }
+  void report(Counters& counters) const;
 
   // The row of interval (g, h) at outer notch q, as STEP 3 reads it: E(g, h)[q] for q < g, W(g, h)[q]
   // for q > h (no witness before (g, h) is filled, and never for h - g < 2 or q in [g, h]).
-  Witness entry(int g, int h, int q) const {
-    const Row& row = rows_[at(g, h)];
-    return row.empty() ? Witness{} : row[static_cast<std::size_t>(q)];
-  }
+  Witness entry(int g, int h, int q) const;
   // S(i, j) of Algorithm CD, the table whose tightness T selects the inner notches of the rows.
   using Program::S;
 
@@ -242,11 +130,7 @@ class ProgramCubic final : public Program {
 
   static constexpr int kMaxNotches = INT16_MAX;
   // The notch count, refused before any table is built when a witness could not hold it.
-  static int checked(std::size_t notches) {
-    if (notches > static_cast<std::size_t>(kMaxNotches))
-      throw std::invalid_argument("chazelle-dobkin: more than 32767 notches");
-    return static_cast<int>(notches);
-  }
+  static int checked(std::size_t notches);
   // The rows of interval (g, h): per outer notch q, E(g, h)[q] for q < g and W(g, h)[q] for q > h.
   using Row = std::vector<Witness>;
 
@@ -267,46 +151,19 @@ class ProgramCubic final : public Program {
   // nearest member of any place, where what it sees begins.)
   class PlaceSet {
    public:
-    explicit PlaceSet(int size) : size_(size) {
-      std::size_t count = static_cast<std::size_t>(std::max(size, 1));
-      do {
-        count = (count + 63) / 64;
-        levels_.emplace_back(count, 0);
-      } while (count > 1);
-    }
-    void insert(int k) {
-      for (auto& level : levels_) {
-        level[static_cast<std::size_t>(k >> 6)] |= std::uint64_t{1} << (k & 63);
-        k >>= 6;
-      }
-    }
+    explicit PlaceSet(int size);
+    void insert(int k);
     bool empty() const { return levels_.back()[0] == 0; }
     // The largest member at most k, or -1; k in [-1, size).
-    int at_or_before(int k) const {
-      for (std::size_t level = 0; level < levels_.size() && k >= 0; ++level, k = (k >> 6) - 1) {
-        const std::uint64_t word = levels_[level][static_cast<std::size_t>(k >> 6)] & (~std::uint64_t{0} >> (63 - (k & 63)));
-        if (word != 0) return descend(level, (k & ~63) | highest(word), highest);
-      }
-      return -1;
-    }
+    int at_or_before(int k) const;
     // The smallest member at least k, or size; k in [0, size].
-    int at_or_after(int k) const {
-      for (std::size_t level = 0; level < levels_.size() && static_cast<std::size_t>(k >> 6) < levels_[level].size();
-           ++level, k = (k >> 6) + 1) {
-        const std::uint64_t word = levels_[level][static_cast<std::size_t>(k >> 6)] & (~std::uint64_t{0} << (k & 63));
-        if (word != 0) return descend(level, (k & ~63) | lowest(word), lowest);
-      }
-      return size_;
-    }
+    int at_or_after(int k) const;
 
    private:
     static int highest(std::uint64_t word) { return 63 - __builtin_clzll(word); }
     static int lowest(std::uint64_t word) { return __builtin_ctzll(word); }
     // From member k of `level` down to the member of the bottom level that `pick` chooses in each word.
-    int descend(std::size_t level, int k, int (*pick)(std::uint64_t)) const {
-      while (level-- > 0) k = k * 64 + pick(levels_[level][static_cast<std::size_t>(k)]);
-      return k;
-    }
+    int descend(std::size_t level, int k, int (*pick)(std::uint64_t)) const;
     int size_;
     std::vector<std::vector<std::uint64_t>> levels_;
   };
@@ -350,11 +207,7 @@ class ProgramCubic final : public Program {
     Walk(const PlaceSet& inserted, int size, bool down) : inserted_(inserted), size_(size), down_(down) {}
     int place(int step) const { return down_ ? size_ - 1 - step : step; }
     // The first inserted step at or after `step`, or size.
-    int first_from(int step) const {
-      if (!down_) return inserted_.at_or_after(step);
-      const int k = inserted_.at_or_before(size_ - 1 - step);
-      return k < 0 ? size_ : size_ - 1 - k;
-    }
+    int first_from(int step) const;
 
    private:
     const PlaceSet& inserted_;
@@ -366,42 +219,16 @@ class ProgramCubic final : public Program {
 
   // Called once per interval, shortest first (STEP 3): answers from the rows of shorter intervals, then
   // fills this interval's row, which needs S only strictly inside it.
-  std::optional<X4Choice> x4_term(int i, int j, int to_beat) override {
-    std::optional<X4Choice> found;
-    if (S(i + 1, j - 1) + 1 > to_beat) found = lookup(i, j);
-    fill(i, j);
-    return found;
-  }
+  std::optional<X4Choice> x4_term(int i, int j, int to_beat) override;
 
   // T(a, b; m): splitting V(a+1, b-1) at m loses nothing.
   bool tight(int a, int b, int m) const { return S(a + 1, m - 1) + S(m + 1, b - 1) == S(a + 1, b - 1); }
 
   // STEP 3's X4 term: a tight X4-pattern from E(k, j)[i] or W(i, l)[j], with its Steiner points.
-  std::optional<X4Choice> lookup(int i, int j) {
-    const int count = S(i + 1, j - 1) + 1;
-    for (int k = i + 1; k < j; ++k) {
-      ++lookup_steps_;
-      const Witness w = tight(i, j, k) ? entry(k, j, i) : Witness{};
-      if (w.inner >= 0) return chosen(count, {i, k, w.inner, j}, w.sides, false);
-    }
-    for (int l = i + 1; l < j; ++l) {
-      ++lookup_steps_;
-      const Witness w = tight(i, j, l) ? entry(i, l, j) : Witness{};
-      if (w.inner >= 0) return chosen(count, {j, i, w.inner, l}, w.sides, true);
-    }
-    return std::nullopt;
-  }
+  std::optional<X4Choice> lookup(int i, int j);
 
   // The witness's Steiner points; Lemma 9 is checked on the patterns laid out (check_x4).
-  X4Choice chosen(int count, const std::array<int, 4>& notches, std::uint8_t sides, bool wrapped) {
-    const auto [q, g, m, h] = notches;
-    const QPoint x = rays_.point(ray(g, sides, 1), ray(q, sides, 0));
-    const QPoint y = rays_.point(ray(h, sides, 3), ray(m, sides, 2));
-    ++chosen_;
-    chosen_from_w_ += wrapped;
-    if (wrapped) return X4Choice{count, m, h, true, y, x};
-    return X4Choice{count, g, m, false, x, y};
-  }
+  X4Choice chosen(int count, const std::array<int, 4>& notches, std::uint8_t sides, bool wrapped);
 
   static int ray(int notch, std::uint8_t sides, int bit) { return 2 * notch + ((sides >> bit) & 1); }
 
@@ -410,108 +237,31 @@ class ProgramCubic final : public Program {
   // S(0, r-1)). A wrong one, which would be a bug of the scans, could still raise an S that STEP 4
   // compares with and so cost patterns elsewhere without a throw; the tests hold every row to walks
   // with segment searches and every count to chazelle-dobkin-n5's.
-  void check_x4(const std::array<int, 4>& notches, const QPoint& x, const QPoint& y) override {
-    if (!is_x4(notches, x, y)) throw std::logic_error("chazelle-dobkin: an X4 witness fails Lemma 9");
-  }
+  void check_x4(const std::array<int, 4>& notches, const QPoint& x, const QPoint& y) override;
 
   // Lemma 9 on the loose pair, checked in full and independently of the scan: every angle at X and Y
   // below 180 degrees, each notch's edge in its closed range and in P, the edges meeting only at X and
   // Y, and XY in P.
-  bool is_x4(const std::array<int, 4>& notches, const QPoint& x, const QPoint& y) {
-    const auto [q, g, m, h] = notches;
-    const QPoint &zq = z(q), &zg = z(g), &zm = z(m), &zh = z(h);
-    if (orient(x, zq, zg) <= 0 || orient(x, zg, y) <= 0 || orient(x, y, zq) <= 0) return false;
-    if (orient(y, zm, zh) <= 0 || orient(y, zh, x) <= 0 || orient(y, x, zm) <= 0) return false;
-    for (int a : {q, g})
-      if (!joins(a, x)) return false;
-    for (int b : {m, h})
-      if (!joins(b, y)) return false;
-    for (int a : {q, g})
-      for (int b : {m, h})
-        if (CGAL::do_intersect(Segment(z(a), x), Segment(z(b), y))) return false;
-    return patterns().inside(x, y);
-  }
+  bool is_x4(const std::array<int, 4>& notches, const QPoint& x, const QPoint& y);
 
-  bool joins(int notch, const QPoint& s) {
-    return patterns().resolves(patterns().bare(static_cast<std::size_t>(notch)), s) &&
-           patterns().sees(patterns().notches()[static_cast<std::size_t>(notch)], s);
-  }
+  bool joins(int notch, const QPoint& s);
 
   const QPoint& z(int notch) { return patterns().notch_point(static_cast<std::size_t>(notch)); }
 
   // The row of interval (g, h): the thesis's scan, once for each choice of the rays G and H.
-  void fill(int g, int h) {
-    if (h - g < 2) return;
-    Row row;
-    for (int sides = 0; sides < 4; ++sides) scan(g, h, 2 * g + (sides & 1), 2 * h + (sides >> 1), row);
-    if (!row.empty()) rows_[at(g, h)] = std::move(row);
-  }
+  void fill(int g, int h);
 
-  // The inserts' orders are counting sorts, O(r) per scan: by_at along H (Y's rank, then the ray),
-  // along_g by the rank along G where their lines cross it (-1, parallel, first).
-  void scan(int g, int h, int G, int H, Row& row) {
-    const std::vector<Query> queries = open_queries(g, h, G, H, row);
-    if (queries.empty()) return;
-    Lists lists(G, H, usable_inserts(g, h, G, H));
-    if (lists.inserts.empty()) return;
-    const auto item = [&](int k) -> const Insert& { return lists.inserts[static_cast<std::size_t>(k)]; };
-    const int size = static_cast<int>(lists.inserts.size());
-    std::vector<int> positions(lists.inserts.size());
-    for (int k = 0; k < size; ++k) positions[static_cast<std::size_t>(k)] = k;
-    const std::size_t range = 2 * static_cast<std::size_t>(notch_count_) + 1;
-    const std::vector<int> by_ray = stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).ray); });
-    const auto at = [&](int k) { return static_cast<std::size_t>(item(k).at); };
-    lists.by_at = stably_ordered(by_ray, range, at);
-    lists.below_rank = counts_below(positions, range, at);
-    const std::vector<int> along_g =
-        stably_ordered(positions, range, [&](int k) { return static_cast<std::size_t>(item(k).along + 1); });
-    for (int k = 0; k < size; ++k) lists.place[static_cast<std::size_t>(lists.by_at[static_cast<std::size_t>(k)])] = k;
-    if (!rays_.loose(G, H)) scans_sharing_an_end_ += rays_.share_an_end(G, H);
-    if (p4_test_ == P4Test::kGeodesics) lists.seen.assign(queries.size(), {-1, -1});
-    sweep_forward(queries, lists, along_g, row);
-    sweep_backward(queries, lists, along_g, row);
-    PlaceSet parallel(size);
-    for (int k = 0; k < size; ++k)
-      if (rays_.cross_sign(lists.at_place(k).ray, G) == 0) parallel.insert(k);
-    for (const Query& q : queries) find_visible(q, lists, parallel, row);
-  }
+  void scan(int g, int h, int G, int H, Row& row);
 
   // The outer notches q, in order along G, whose loose point X on G passes the conditions that do not
   // depend on the inner notch: X opens towards z_g (angle z_q X z_g), lies strictly right of the line
   // of H (angle at Y towards X), P1 is not a constant false, and z_q X cannot cross z_h Y.
-  std::vector<Query> open_queries(int g, int h, int G, int H, const Row& row) {
-    std::vector<Query> out;
-    for (int Q : rays_.along(G)) {
-      ++scan_steps_;
-      const int q = LooseRays::notch(Q);
-      if ((q >= g && q <= h) || (!row.empty() && row[static_cast<std::size_t>(q)].inner >= 0)) continue;
-      if (!rays_.opens(Q, G) || rays_.side(H, G, Q) >= 0) continue;
-      const int turn = rays_.cross_sign(Q, H);
-      if (turn == 0 && rays_.base_side(Q, H) <= 0) continue;
-      if (turn > 0 && crosses_before(Q, H, G)) continue;
-      ++table_entries_;
-      out.push_back({Q, rays_.key(G, Q), static_cast<int>(out.size())});
-    }
-    return out;
-  }
+  std::vector<Query> open_queries(int g, int h, int G, int H, const Row& row);
 
   // The tight inner notches m whose loose point Y on H passes the conditions that do not depend on the
   // outer notch: Y opens towards z_h, lies strictly right of the line of G, P2 is not a constant false,
   // and z_m Y cannot cross z_g X.
-  std::vector<Insert> usable_inserts(int g, int h, int G, int H) {
-    std::vector<Insert> out;
-    for (int M : rays_.along(H)) {
-      ++scan_steps_;
-      const int m = LooseRays::notch(M);
-      if (m <= g || m >= h || !tight(g, h, m)) continue;
-      if (!rays_.opens(M, H) || rays_.side(G, H, M) >= 0) continue;
-      const int turn = rays_.cross_sign(M, G);
-      if (turn == 0 && rays_.base_side(M, G) <= 0) continue;
-      if (turn > 0 && crosses_before(M, G, H)) continue;
-      out.push_back({M, rays_.key(G, M), rays_.key(H, M)});
-    }
-    return out;
-  }
+  std::vector<Insert> usable_inserts(int g, int h, int G, int H);
 
   // counts[v]: how many of `positions` have a key (an integer in [0, range)) below v, for v in
   // [0, range]. O(positions + range).
@@ -535,38 +285,18 @@ class ProgramCubic final : public Program {
   // Whether the segment of ray A up to its loose point with C meets ray B's segment from its notch to
   // the crossing of the two lines (with B's segment reaching past the crossing, which P1 or P2 ensures
   // in the class where this is asked).
-  bool crosses_before(int A, int B, int C) const {
-    return rays_.meet_sign(B, A) >= 0 && rays_.meet_sign(A, B) >= 0 && rays_.key(A, B) <= rays_.key(A, C);
-  }
+  bool crosses_before(int A, int B, int C) const;
 
   // P2 for inserts whose line crosses G with cross(u_m, u_g) > 0 asks X beyond the crossing: a prefix
   // along G. Queries are answered before the inserts of the same rank (strict inequality).
-  void sweep_forward(const std::vector<Query>& queries, Lists& lists, const std::vector<int>& along_g, Row& row) {
-    PlaceSet inserted(static_cast<int>(lists.inserts.size()));
-    std::size_t next = 0;
-    for (const Query& q : queries) {
-      for (; next < along_g.size() && lists.inserts[static_cast<std::size_t>(along_g[next])].along < q.along; ++next)
-        admit(lists, along_g[next], 1, inserted);
-      find_visible(q, lists, inserted, row);
-    }
-  }
+  void sweep_forward(const std::vector<Query>& queries, Lists& lists, const std::vector<int>& along_g,
+                     Row& row);
 
-  void sweep_backward(const std::vector<Query>& queries, Lists& lists, const std::vector<int>& along_g, Row& row) {
-    PlaceSet inserted(static_cast<int>(lists.inserts.size()));
-    std::size_t next = along_g.size();
-    for (auto q = queries.rbegin(); q != queries.rend(); ++q) {
-      for (; next > 0 && lists.inserts[static_cast<std::size_t>(along_g[next - 1])].along > q->along; --next)
-        admit(lists, along_g[next - 1], -1, inserted);
-      find_visible(*q, lists, inserted, row);
-    }
-  }
+  void sweep_backward(const std::vector<Query>& queries, Lists& lists, const std::vector<int>& along_g,
+                      Row& row);
 
   // Inserts insert k into the pass when its line crosses G with the pass's sign.
-  void admit(const Lists& lists, int k, int sign, PlaceSet& inserted) {
-    ++scan_steps_;
-    if (rays_.cross_sign(lists.inserts[static_cast<std::size_t>(k)].ray, lists.G) == sign)
-      inserted.insert(lists.place[static_cast<std::size_t>(k)]);
-  }
+  void admit(const Lists& lists, int k, int sign, PlaceSet& inserted);
 
   static bool has_witness(const Row& row, int q) { return !row.empty() && row[static_cast<std::size_t>(q)].inner >= 0; }
 
@@ -574,40 +304,12 @@ class ProgramCubic final : public Program {
   // inserted Y from the far end of the list inwards while P1 holds, and the first that passes P4 (XY in
   // P) is the witness. Steps [0, end) are those where P1 holds: down from the top of H when Q's
   // direction does not turn clockwise from H's, else up from the bottom.
-  int p1_end(const Query& query, const Lists& lists) const {
-    const int turn = rays_.cross_sign(query.ray, lists.H);
-    const int size = static_cast<int>(lists.inserts.size());
-    if (turn == 0) return size;
-    const int bound = rays_.key(lists.H, query.ray);
-    const auto places_below = [&](int rank) { return lists.below_rank[static_cast<std::size_t>(rank)]; };
-    return turn > 0 ? size - places_below(bound + 1) : places_below(bound);
-  }
+  int p1_end(const Query& query, const Lists& lists) const;
 
   // The witness of a query among the places inserted in a pass, if any: the first inserted step of its
   // walk where P1 holds and X sees Y. kGeodesics reads it from the places X sees (one lookup);
   // kSegmentSearch tests the steps in turn.
-  void find_visible(const Query& query, Lists& lists, const PlaceSet& inserted, Row& row) {
-    const int q = LooseRays::notch(query.ray);
-    if (inserted.empty() || has_witness(row, q)) return;
-    const bool down = rays_.cross_sign(query.ray, lists.H) >= 0;
-    const int size = static_cast<int>(lists.inserts.size()), end = p1_end(query, lists);
-    const Walk walk(inserted, size, down);
-    int found = -1;
-    if (p4_test_ == P4Test::kSegmentSearch) {
-      const QPoint& x = rays_.loose_point(lists.G, query.ray).exact;
-      for (int step = walk.first_from(0); step < end && found < 0; step = walk.first_from(step + 1)) {
-        ++scan_steps_;
-        ++p4_tests_;
-        if (patterns().inside(x, y_at(lists, walk.place(step)).exact)) found = step;
-      }
-    } else if (walk.first_from(0) < end) {
-      const auto [lo, hi] = seen_places(query, lists);
-      const int from = down ? size - hi : lo, to = down ? size - lo : hi;  // the steps X sees
-      const int first = walk.first_from(from);
-      if (first < std::min(to, end)) found = first;
-    }
-    if (found >= 0) record(row, q, query.ray, lists.G, lists.at_place(walk.place(found)).ray, lists.H);
-  }
+  void find_visible(const Query& query, Lists& lists, const PlaceSet& inserted, Row& row);
 
   const FilteredPoint& y_at(const Lists& lists, int place) { return rays_.loose_point(lists.H, lists.at_place(place).ray); }
 
@@ -626,102 +328,27 @@ class ProgramCubic final : public Program {
   // query's ended: along a pass the queries come in order along G, f1 and f2 move monotonically over
   // the funnels (F3), and the ends of what X sees along H monotonically too (M), so a scan costs
   // O(queries + inserts + funnels) orientations.
-  std::array<int, 2> seen_places(const Query& query, Lists& lists) {
-    std::array<int, 2>& seen = lists.seen[static_cast<std::size_t>(query.index)];
-    if (seen[0] >= 0) return seen;
-    seen = {0, 0};
-    const FilteredPoint& x = rays_.loose_point(lists.G, query.ray);
-    const Sight sight = sight_of(x, lists);
-    if (sight.angle == 0) return seen;
-    const auto view = [&](std::size_t place) {
-      ++scan_steps_;
-      ++p4_tests_;
-      return view_from(x, sight, y_at(lists, static_cast<int>(place)));
-    };
-    const std::size_t size = lists.inserts.size();
-    auto& [lo, hi] = lists.place_guess;
-    lo = first_holding(0, size, lo, [&](std::size_t k) { return view(k) != View::kTowardsNotch; });
-    hi = first_holding(lo, size, hi, [&](std::size_t k) { return view(k) == View::kTowardsFarEnd; });
-    seen = {static_cast<int>(lo), static_cast<int>(hi)};
-    return seen;
-  }
+  std::array<int, 2> seen_places(const Query& query, Lists& lists);
 
   // f1, f2 and their angle for X, the scan's funnels built when its first query needs them.
-  Sight sight_of(const FilteredPoint& x, Lists& lists) {
-    if (lists.funnels[0].points.empty())
-      for (int end : {0, 1}) lists.funnels[static_cast<std::size_t>(end)] = funnel(lists.G, LooseRays::terminal(lists.H, end));
-    Sight sight;
-    for (std::size_t end : {0, 1}) sight.first_met[end] = &first_point_met(lists.funnels[end], x, lists.met_guess[end]);
-    sight.angle = orient(x, *sight.first_met[0], *sight.first_met[1]);
-    return sight;
-  }
+  Sight sight_of(const FilteredPoint& x, Lists& lists);
 
   // The funnel of the geodesics from G's ends to terminal e: O(r), their length (they list their turns,
   // at notches, and their ends).
-  Funnel funnel(int G, std::size_t e) {
-    geodesics().path(LooseRays::terminal(G, 0), e, from_notch_);
-    geodesics().path(LooseRays::terminal(G, 1), e, from_far_end_);
-    const std::vector<const FilteredPoint*>&A = from_notch_, &B = from_far_end_;
-    std::size_t a = A.size(), b = B.size();
-    while (a > 0 && b > 0 && A[a - 1] == B[b - 1]) --a, --b;
-    if (a == A.size()) throw std::logic_error("chazelle-dobkin: two geodesics to one point end apart");
-    // A[0, a) and B[0, b) come before the apex, where the two geodesics meet.
-    const FilteredPoint* apex = A[a];
-    int turn = 0;
-    while (a > 0 && b > 0 && (turn = orient(*apex, *B[b - 1], *A[a - 1])) == 0) {
-      // The geodesics list only their turns: the one passes straight through the point that the other
-      // lists last before the apex, which the two therefore share.
-      if (CGAL::collinear_are_strictly_ordered_along_line(apex->exact, A[a - 1]->exact, B[b - 1]->exact))
-        apex = A[--a];
-      else if (CGAL::collinear_are_strictly_ordered_along_line(apex->exact, B[b - 1]->exact, A[a - 1]->exact))
-        apex = B[--b];
-      else
-        throw std::logic_error("chazelle-dobkin: a funnel of geodesics with no angle at its apex");
-    }
-    Funnel f;
-    if (a > 0 && b > 0) {
-      const std::vector<const FilteredPoint*>& left = turn > 0 ? A : B;
-      f.points.assign(left.begin(), left.begin() + static_cast<std::ptrdiff_t>(turn > 0 ? a : b));
-    }
-    f.apex = f.points.size();
-    f.points.push_back(apex);
-    if (a > 0 && b > 0) {
-      const std::vector<const FilteredPoint*>& right = turn > 0 ? B : A;
-      for (std::size_t k = turn > 0 ? b : a; k-- > 0;) f.points.push_back(right[k]);
-    }
-    funnel_points_ += static_cast<std::int64_t>(f.points.size());
-    return f;
-  }
+  Funnel funnel(int G, std::size_t e);
 
   // The first turn (or end) of the geodesic from X (on the open G) to the funnel's e (F3), searched from
   // `guess`, which becomes its index.
-  const FilteredPoint& first_point_met(const Funnel& f, const FilteredPoint& x, std::size_t& guess) {
-    if (f.points.size() > 1) guess = funnel_tangent(f.points, 0, f.points.size() - 1, f.apex, x, guess, funnel_steps_);
-    return *f.points[f.points.size() > 1 ? guess : 0];
-  }
+  const FilteredPoint& first_point_met(const Funnel& f, const FilteredPoint& x, std::size_t& guess);
 
   // F4: X sees exactly the points of the open H strictly inside the angle (less than 180 degrees)
   // between the rays from X through f1 and f2; nothing when that angle is empty. O(1).
-  static View view_from(const FilteredPoint& x, const Sight& sight, const FilteredPoint& y) {
-    const auto& [f1, f2] = sight.first_met;
-    if (sight.angle == 0 || orient(x, *f1, y) != sight.angle) return View::kTowardsNotch;
-    if (orient(x, y, *f2) != sight.angle) return View::kTowardsFarEnd;
-    return View::kSeen;
-  }
+  static View view_from(const FilteredPoint& x, const Sight& sight, const FilteredPoint& y);
 
-  void record(Row& row, int q, int Q, int G, int M, int H) {
-    if (row.empty()) row.assign(static_cast<std::size_t>(notch_count_), Witness{});
-    const auto bit = [](int ray, int shift) { return static_cast<std::uint8_t>((ray & 1) << shift); };
-    row[static_cast<std::size_t>(q)] = {static_cast<std::int16_t>(LooseRays::notch(M)),
-                                        static_cast<std::uint8_t>(bit(Q, 0) | bit(G, 1) | bit(M, 2) | bit(H, 3))};
-    ++table_witnesses_;
-  }
+  void record(Row& row, int q, int Q, int G, int M, int H);
 
   // The trees, over P's decomposition by vertical chords, built when a scan first needs a geodesic.
-  GeodesicTrees& geodesics() {
-    if (!geodesics_) geodesics_.emplace(polygon(), rays_.terminals());
-    return *geodesics_;
-  }
+  GeodesicTrees& geodesics();
 
   int notch_count_;
   LooseRays rays_;
