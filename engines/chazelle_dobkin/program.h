@@ -13,7 +13,7 @@
 // STEP 5 finishes the remaining notches with the naive decomposition searched through the boundary's
 // convex chains (naive_complete_chains, engines/naive/naive.h; Theorem 4), and the cut graph is turned
 // into pieces by the shared routine (Theorem 10). Pattern detection (Theorems 13-15, Corollary 14) is
-// in chazelle_dobkin_patterns.h.
+// in engines/chazelle_dobkin/patterns.h.
 //
 // Orientation: the thesis walks the boundary clockwise; our polygons are counter-clockwise and the
 // notches z_0..z_{r-1} are taken in index order, so the thesis's R_i (the edge towards V(i, j)) is our
@@ -42,11 +42,11 @@
 //   the thesis's extreme (a symbolic perturbation would remove it); no test has met such a case.
 // - STEP 3's X4 term is left to the variant (x4_term).
 // Deviation: superranges are replaced by trees of geodesics from each notch over a decomposition by
-// vertical chords (chazelle_dobkin_patterns.h), in the same O(n + r^2 log n) preprocessing.
+// vertical chords (engines/chazelle_dobkin/patterns.h), in the same O(n + r^2 log n) preprocessing.
 //
 // Time, apart from x4_term: that preprocessing; the joint of each of the O(r^2) stored subtrees is
 // built once; then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each O(1) (Theorems 13
-// and 14, chazelle_dobkin_patterns.h); STEP 5's naive completion, O(n + r^2 log(n/r)). Space O(r^2)
+// and 14, engines/chazelle_dobkin/patterns.h); STEP 5's naive completion, O(n + r^2 log(n/r)). Space O(r^2)
 // subproblems and subtree joints, plus O(n).
 // Output: exactly r + 1 - S(0, r-1) convex pieces; Steiner points exact.
 #pragma once
