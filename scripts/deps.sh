@@ -4,8 +4,8 @@
 set -euo pipefail
 # clang and its sanitizer and libFuzzer runtimes (libclang-rt-14-dev, only recommended by clang) build
 # the sanitizer build of `make test` and `make fuzz`, against the same libstdc++ as g++.
-packages=(build-essential clang libclang-rt-14-dev cmake git libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-          libboost-program-options-dev libbenchmark-dev libgtest-dev googletest nlohmann-json3-dev
+packages=(build-essential clang libclang-rt-14-dev cmake git libcgal-dev libgeos-dev libgmp-dev libmpfr-dev
+          libboost-dev libboost-program-options-dev libbenchmark-dev libgtest-dev googletest nlohmann-json3-dev
           python3 python3-matplotlib python3-numpy python3-flake8
           nodejs)  # node runs the JavaScript peers (peers/*.json); any installed nodejs package counts
 missing=()
