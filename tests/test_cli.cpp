@@ -4,6 +4,7 @@
 #include "core/json.h"
 #include "core/registry.h"
 #include "generators/family.h"
+#include "tests/command.h"
 #include "tests/fixtures.h"
 #include "tests/independent_check.h"
 #include "tests/reliability.h"
@@ -24,24 +25,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using command::Result;
+using command::slurp;
 
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("polydecomp-cli-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
+    dir_ = command::scratch_folder("polydecomp-cli");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -51,12 +41,7 @@ class Cli : public ::testing::Test {
     return p;
   }
 
-  Result cli(const std::string& args) {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string command = std::string(PD_CLI) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
-    const int raw = std::system(command.c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  }
+  Result cli(const std::string& args) { return command::run(std::string(PD_CLI) + " " + args, dir_); }
 
   void expect_error(const std::string& args, int status, const std::string& message) {
     const Result r = cli(args);

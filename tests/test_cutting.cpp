@@ -7,6 +7,7 @@
 #include "core/validate.h"
 #include "engines/cutting/polygon_cutting.h"
 #include "generators/family.h"
+#include "tests/command.h"
 #include "tests/fixtures.h"
 #include "tests/independent_check.h"
 #include "tests/reliability.h"
@@ -294,9 +295,7 @@ TEST(CuttingTri, WorkIsNLogN) {
 class CutCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("polydecomp-cut-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
+    dir_ = command::scratch_folder("polydecomp-cut");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -306,22 +305,8 @@ class CutCli : public ::testing::Test {
     return p.string();
   }
 
-  struct Result {
-    int status;
-    std::string out, err;
-  };
-  Result cli(const std::string& args) {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string command = std::string(PD_CLI) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
-    const int raw = std::system(command.c_str());
-    auto slurp = [](const fs::path& path) {
-      std::ifstream in(path, std::ios::binary);
-      std::ostringstream s;
-      s << in.rdbuf();
-      return s.str();
-    };
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  }
+  using Result = command::Result;
+  Result cli(const std::string& args) { return command::run(std::string(PD_CLI) + " " + args, dir_); }
 
   fs::path dir_;
 };

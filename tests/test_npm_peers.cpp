@@ -5,6 +5,7 @@
 // it is: earcut is valid with n-2 triangles on these polygons; poly-decomp's quickDecomp and decomp are
 // not always valid or optimal, and the two polygons below pin down how.
 #include "core/json.h"
+#include "tests/command.h"
 
 #include <gtest/gtest.h>
 
@@ -24,17 +25,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using command::Result;
+using command::slurp;
 
 const char* const kNodeModules = PD_SOURCE_DIR "/peers/npm/node_modules";
 
@@ -42,18 +34,11 @@ class NpmPeers : public ::testing::Test {
  protected:
   void SetUp() override {
     ASSERT_TRUE(fs::is_directory(kNodeModules)) << kNodeModules << " is missing: run `make deps`";
-    dir_ = fs::temp_directory_path() / ("polydecomp-npm-peers-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
+    dir_ = command::scratch_folder("polydecomp-npm-peers");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  Result run(const std::string& program, const std::string& args) {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string command = program + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
-    const int raw = std::system(command.c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  }
+  Result run(const std::string& program, const std::string& args) { return command::run(program + " " + args, dir_); }
   // `run --json` of `algorithm` on the polygon in `file` (the peers come from the project's peers/).
   Json run_on(const std::string& algorithm, const fs::path& file) {
     const Result r = run(PD_CLI, "run --json --algorithm " + algorithm + " --input " + file.string());

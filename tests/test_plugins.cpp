@@ -3,6 +3,7 @@
 // one that crashes, hangs, prints garbage, refuses or returns a wrong decomposition is reported as
 // exactly that.
 #include "core/json.h"
+#include "tests/command.h"
 
 #include <gtest/gtest.h>
 
@@ -21,17 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using command::Result;
+using command::slurp;
 
 // A plug-in's body: Python that answers every polygon line with what `answer` computes from `points`.
 std::string python_plugin(const std::string& answer) {
@@ -45,8 +37,7 @@ std::string python_plugin(const std::string& answer) {
 class Plugins : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("polydecomp-plugins-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = command::scratch_folder("polydecomp-plugins");
     fs::create_directories(dir_ / "plugins");
     fs::copy(PD_SOURCE_DIR "/examples/plugin/fan.py", dir_ / "plugins");
     fs::copy(PD_SOURCE_DIR "/examples/plugin/fan.json", dir_ / "plugins");
@@ -63,12 +54,7 @@ class Plugins : public ::testing::Test {
         << "\"pieces_bound\": \"== n-2\", \"command\": [\"/usr/bin/python3\", \"" << name << ".py\"]}\n";
   }
 
-  Result run(const std::string& program, const std::string& args) {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string command = program + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
-    const int raw = std::system(command.c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  }
+  Result run(const std::string& program, const std::string& args) { return command::run(program + " " + args, dir_); }
   Result cli(const std::string& args) { return run(PD_CLI, args + " --plugins " + (dir_ / "plugins").string()); }
   Result run_on(const std::string& algorithm, const std::string& polygon) {
     return cli("run --json --algorithm " + algorithm + " --input " + (dir_ / polygon).string());
