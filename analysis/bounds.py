@@ -17,8 +17,7 @@ def main(argv=None):
     parser.add_argument("results", help="an assembled results file, e.g. results/quick.json")
     parser.add_argument("--polydecomp", default="build/polydecomp", help="the command line, for the claims")
     parser.add_argument("--registry", help="a saved `polydecomp list --json` output, instead of running it")
-    parser.add_argument("--plugins", action="append", default=[],
-                        help="a folder of external algorithms' manifests (any number of times)")
+    plugins.add_plugins_argument(parser)
     parser.add_argument("-o", "--output", default="results/bounds.md")
     args = parser.parse_args(argv)
     plugins.use_plugins(args.plugins)

@@ -18,8 +18,7 @@ def main(argv=None):
     parser.add_argument("results", help="an assembled results file, e.g. results/quick.json")
     parser.add_argument("--polydecomp", default="build/polydecomp")
     parser.add_argument("--registry", help="a saved `polydecomp list --json` output, instead of running it")
-    parser.add_argument("--plugins", action="append", default=[],
-                        help="a folder of external algorithms' manifests (any number of times)")
+    plugins.add_plugins_argument(parser)
     parser.add_argument("-o", "--output", default="results/plots")
     parser.add_argument("--gallery", default="random:40:12:1", help="FAMILY:N:R:SEED, or 'none'")
     args = parser.parse_args(argv)

@@ -26,8 +26,7 @@ def main(argv=None):
     parser.add_argument("--build", default="build")
     parser.add_argument("--results", default="results")
     parser.add_argument("--gallery", default="random:40:12:1", help="FAMILY:N:R:SEED of the gallery polygon")
-    parser.add_argument("--plugins", action="append", default=[],
-                        help="a folder of external algorithms' manifests (any number of times)")
+    plugins.add_plugins_argument(parser)
     parser.add_argument("--no-analysis", action="store_true", help="only run the sweep and write JSON and CSV")
     parser.add_argument("bench_args", nargs="*", help="after --: more polydecomp-bench arguments")
     args = parser.parse_args(argv)

@@ -12,3 +12,9 @@ def use_plugins(folders):
     named = [os.path.abspath(f) for f in folders]
     existing = os.environ.get("POLYDECOMP_PLUGINS")
     os.environ["POLYDECOMP_PLUGINS"] = ":".join(([existing] if existing else []) + named)
+
+
+def add_plugins_argument(parser):
+    """The scripts' --plugins option: a folder of plug-in manifests, any number of times."""
+    parser.add_argument("--plugins", action="append", default=[],
+                        help="a folder of external algorithms' manifests (any number of times)")
