@@ -4,7 +4,8 @@
   - killing a sweep in the middle and running the same command again loses no finished key, runs no
     finished key again, and ends with the same keys and piece counts as an uninterrupted run;
   - two shards merged with merge.py equal one unsharded run in keys, statuses and piece counts;
-  - an algorithm's own budget ("budget_seconds_for") replaces the sweep's for that algorithm only.
+  - an algorithm's own budget ("budget_seconds_for") replaces the sweep's for that algorithm only;
+  - an unknown sweep or family is refused as such (exit 2), without the advice to resume.
 
 usage: integration_sweep.py --build DIR
 """
@@ -87,6 +88,19 @@ class SweepIntegration(unittest.TestCase):
         if expect_ok:
             self.assertEqual(done.returncode, 0, done.stderr[-2000:])
         return done
+
+    def test_an_unknown_sweep_or_family_is_refused_without_advice_to_resume(self):
+        unknown_family = {"tiny": dict(TINY_SWEEPS["tiny"], curves=[
+            {"vs": "n", "families": ["nosuch"], "r": ["default"], "n": [20]}])}
+        for sweeps, sweep_name in ((None, "nosuch"), (unknown_family, "tiny")):
+            workdir = self.workdir("unknown-" + sweep_name, sweeps)
+            command = sweep_command(workdir)
+            command[command.index("--sweep") + 1] = sweep_name
+            done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, check=False)
+            self.assertEqual(done.returncode, 2, done.stderr)
+            self.assertIn("nosuch", done.stderr)
+            self.assertIn("sweep: not run", done.stderr)
+            self.assertNotIn("resume", done.stderr)
 
     def reference(self):
         whole = self.workdir("whole")

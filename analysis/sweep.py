@@ -37,6 +37,9 @@ def main(argv=None):
         status = sweep.run_until_complete(args)
     except KeyboardInterrupt:
         status = 130
+    if status == sweep.USAGE_EXIT:
+        print("sweep: not run: polydecomp-bench refused the sweep (its error is above)", file=sys.stderr)
+        return status
     stem = sweep.stem(args)
     journal = stem + ".journal.jsonl"
     if os.path.exists(journal):

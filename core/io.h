@@ -1,9 +1,11 @@
 // Reading polygons and writing results.
 //
-// Input formats are detected from the content: plain text (`x y` per line, `#` comments, an optional
-// single-number count line), WKT `POLYGON((...))`, GeoJSON `Polygon` or a `Feature` holding one (also a
-// `FeatureCollection` of one feature, and earcut's bare array of rings). A reader returns the outer ring
-// as written; Polygon::make does the geometric checks.
+// Input formats are detected from the content (readers.cpp): plain text (`x y` per line, `#` comments,
+// an optional single-number count line), WKT `POLYGON` or a one-part `MULTIPOLYGON`, GeoJSON `Polygon`,
+// a one-part `MultiPolygon`, a `Feature` holding one, a `FeatureCollection` of one such feature, and
+// earcut's bare array of rings; a UTF-8 byte order mark is skipped. Every coordinate is read by
+// core/coordinate.h's rule. A reader returns the outer ring as written; Polygon::make does the
+// geometric checks. Writers are in io.cpp.
 #pragma once
 
 #include "core/decomposition.h"
@@ -16,10 +18,11 @@
 
 namespace pd {
 
-// Parses polygon text in any supported format. Throws PolygonError naming the problem (garbage, an
-// empty ring, holes, a multipolygon).
+// Parses polygon text in any supported format. Throws PolygonError naming the problem (garbage, a
+// number that is not a coordinate, an empty ring, holes, a multipolygon).
 std::vector<Point> parse_polygon(const std::string& content);
-// Reads and parses a file; an unreadable file is a PolygonError too ("cannot read FILE").
+// Reads and parses a file ("-": the standard input); an unreadable file, a directory and a file holding
+// a NUL byte (binary data, /dev/zero) are PolygonErrors too.
 std::vector<Point> read_polygon_file(const std::string& path);
 
 enum class Format { Txt, Wkt, GeoJson };

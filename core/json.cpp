@@ -4,21 +4,25 @@
 // exact, as 64-bit values.
 #include "core/json.h"
 
+#include "core/coordinate.h"
+
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
 
 namespace pd {
 namespace {
 
 constexpr std::size_t kMaxDepth = 256;
+constexpr int kNumberOverflow = 406;  // nlohmann's out_of_range.406: a number beyond a double
 
 // Builds a Json tree from nlohmann's SAX events. Containers under construction are kept on a stack;
 // nesting is limited so that hostile input cannot exhaust memory or, later, the stack of a recursive
 // reader.
 class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
  public:
+  explicit TreeBuilder(bool pack_positions) : pack_(pack_positions) {}
   Json result() { return std::move(root_); }
   const std::string& failure() const { return failure_; }
 
@@ -47,8 +51,10 @@ class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
   bool end_object() override { return close(); }
   bool start_array(std::size_t) override { return open(Json::Type::Array); }
   bool end_array() override { return close(); }
-  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
-    failure_ = "JSON: " + reason_of(e) + " at offset " + std::to_string(position);
+  bool parse_error(std::size_t position, const std::string& token, const nlohmann::detail::exception& e) override {
+    std::string why;
+    const bool number_out_of_range = e.id == kNumberOverflow && !coordinate_value(token, why);
+    failure_ = "JSON: " + (number_out_of_range ? why : reason_of(e)) + " at offset " + std::to_string(position);
     return false;
   }
 
@@ -87,17 +93,59 @@ class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
     if (open_.empty()) {
       root_ = std::move(v);
     } else if (open_.back().is_array()) {
-      open_.back().items.push_back(std::move(v));
+      add_to_array(open_.back(), std::move(v));
     } else {
       open_.back().fields[keys_.back()] = std::move(v);
     }
     return true;
+  }
+  // A position joins its array's packed rows while the array holds only positions of one width.
+  void add_to_array(Json& array, Json v) {
+    if (pack_ && array.items.empty() && (array.packed.empty() || array.width == v.items.size()) &&
+        pack_row(v, array.packed)) {
+      array.width = v.items.size();
+      return;
+    }
+    unpack(array);
+    array.items.push_back(std::move(v));
+  }
+  // Appends v's values to `rows` if v is an array of valid coordinates; leaves `rows` as it was if not.
+  static bool pack_row(const Json& v, std::vector<double>& rows) {
+    if (!v.is_array() || v.is_packed() || v.items.empty()) return false;
+    const std::size_t start = rows.size();
+    std::string why;
+    for (const Json& item : v.items) {
+      const std::optional<double> d = item.is_number() ? coordinate_value(item.text, why) : std::nullopt;
+      if (!d || !std::isfinite(*d)) {
+        rows.resize(start);
+        return false;
+      }
+      rows.push_back(*d);
+    }
+    return true;
+  }
+  // Turns packed rows back into items (an array that mixes positions with anything else).
+  static void unpack(Json& array) {
+    if (!array.is_packed()) return;
+    for (std::size_t row = 0; row < array.packed.size(); row += array.width) {
+      Json position;
+      position.type = Json::Type::Array;
+      for (std::size_t k = 0; k < array.width; ++k) position.items.push_back(number(shortest_text(array.packed[row + k])));
+      array.items.push_back(std::move(position));
+    }
+    array.packed.clear();
+    array.width = 0;
+  }
+  static std::string shortest_text(double d) {
+    char buffer[32];
+    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, d).ptr);
   }
 
   std::vector<Json> open_;
   std::vector<std::string> keys_;  // per open container: the member name being read
   Json root_;
   std::string failure_;
+  bool pack_;
 };
 
 }  // namespace
@@ -109,16 +157,16 @@ const Json* Json::get(const std::string& key) const {
 
 double Json::number() const {
   if (type != Type::Number) throw JsonError("expected a number");
-  char* end = nullptr;
-  const double d = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size()) throw JsonError("'" + text + "' is not a number");
-  if (!std::isfinite(d)) throw JsonError("'" + text + "' is not a finite number");
-  return d;
+  std::string why;
+  const std::optional<double> d = coordinate_value(text, why);
+  if (!d) throw JsonError(why);
+  if (!std::isfinite(*d)) throw JsonError(quoted_input(text) + " is not a finite number");
+  return *d;
 }
 
-Json parse_json(const std::string& text) {
-  TreeBuilder builder;
-  if (!nlohmann::json::sax_parse(text, &builder)) throw JsonError(builder.failure());
+Json parse_json(std::string_view text, bool pack_positions) {
+  TreeBuilder builder(pack_positions);
+  if (!nlohmann::json::sax_parse(text.data(), text.data() + text.size(), &builder)) throw JsonError(builder.failure());
   return builder.result();
 }
 

@@ -1,8 +1,11 @@
 // The polydecomp command line: list | generate | run | cut (see docs/CONTRACT.md).
 //
-// Exit status: 0 success, 2 bad usage, 3 bad polygon, 4 an algorithm failed (or `run --max-seconds`
-// stopped it). Every failure prints one line on stderr beginning "error:" and nothing on stdout; output
-// is assembled completely before any of it is written, so a failure never leaves partial output.
+// Exit status: 0 success, 2 bad usage, 3 bad polygon, 4 the run failed (the algorithm failed, ran out
+// of memory or stack, or `--max-seconds` / `--max-memory` stopped it), 5 `run`'s result is not valid
+// (the report is still printed), 6 the output could not be written. Every failure prints one line on
+// stderr beginning "error:" and nothing on stdout; output is assembled completely before any of it is
+// written, and every write is checked, so a failure never leaves partial output unreported.
+#include "core/coordinate.h"
 #include "core/io.h"
 #include "core/json.h"
 #include "core/registry.h"
@@ -10,19 +13,27 @@
 #include "engines/cutting/polygon_cutting.h"
 #include "generators/family.h"
 #include "harness/large_stack.h"
+#include "harness/last_resort.h"
 #include "harness/plugins.h"
 #include "harness/progress.h"
 
 #include <boost/program_options.hpp>
 
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
+#include <climits>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -35,7 +46,7 @@ namespace po = boost::program_options;
 namespace pd {
 namespace {
 
-constexpr int kUsage = 2, kBadPolygon = 3, kAlgorithmFailed = 4;
+constexpr int kUsage = 2, kBadPolygon = 3, kAlgorithmFailed = 4, kInvalidResult = 5, kCannotWrite = 6;
 
 struct Exit {
   int status;
@@ -44,14 +55,54 @@ struct Exit {
 
 [[noreturn]] void usage(const std::string& why) { throw Exit{kUsage, why}; }
 
+// `--help` of a command: its usage lines and options, on stdout with status 0.
+struct Help {
+  std::string text;
+};
+
+// A non-negative integer option. Program_options would read "-5" as 2^64 - 5.
+struct Count {
+  std::uint64_t value;
+};
+
+void validate(boost::any& v, const std::vector<std::string>& values, Count*, int) {
+  po::validators::check_first_occurrence(v);
+  const std::string& s = po::validators::get_single_string(values);
+  errno = 0;
+  char* end = nullptr;
+  const unsigned long long x = s.empty() || s[0] < '0' || s[0] > '9' ? 0 : std::strtoull(s.c_str(), &end, 10);
+  if (!end || *end != '\0' || errno == ERANGE) throw po::invalid_option_value(s);
+  v = Count{x};
+}
+
 const char* kUsageText =
     "usage: polydecomp list [--json | --markdown] [--plugins DIR]...\n"
     "       polydecomp generate --family F --n N [--reflex R] [--seed S] [--format txt|wkt|geojson] [-o FILE]\n"
-    "       polydecomp run --algorithm A --input FILE [--json] [--svg FILE] [--no-validate] [--max-seconds S]\n"
-    "                      [--plugins DIR]...\n"
+    "       polydecomp run --algorithm A --input FILE|- [--json] [--svg FILE] [--no-validate] [--max-seconds S]\n"
+    "                      [--max-memory SIZE] [--plugins DIR]...\n"
     "       polydecomp cut --input FILE [--weights reflex|all|FILE] [--vertical] [--json]\n";
 
-po::variables_map parse(const std::vector<std::string>& args, const po::options_description& opts) {
+// The usage lines of `command` in kUsageText.
+std::string usage_of(const std::string& command) {
+  std::string out;
+  bool in_command = false;
+  std::istringstream lines(kUsageText);
+  for (std::string line; std::getline(lines, line);) {
+    const std::size_t at = line.find("polydecomp ");
+    if (at != std::string::npos) in_command = line.compare(at + 11, command.size() + 1, command + " ") == 0;
+    if (in_command) out += line + "\n";
+  }
+  return out;
+}
+
+po::variables_map parse(const std::string& command, const std::vector<std::string>& args,
+                        const po::options_description& opts) {
+  for (const std::string& a : args)
+    if (a == "--help" || a == "-h") {
+      std::ostringstream text;
+      text << usage_of(command) << opts;
+      throw Help{text.str()};
+    }
   po::variables_map vm;
   try {
     po::store(po::command_line_parser(args).options(opts).run(), vm);
@@ -62,19 +113,73 @@ po::variables_map parse(const std::vector<std::string>& args, const po::options_
   return vm;
 }
 
-// Writes text to a file atomically (a temporary beside it, then a rename), or to stdout.
+[[noreturn]] void cannot_write(const std::string& what) {
+  throw Exit{kCannotWrite, "cannot write " + what + ": " + std::strerror(errno)};
+}
+
+// Writes all of `text` to `fd`; false (errno set) on a failure.
+bool write_all(int fd, const std::string& text) {
+  for (std::size_t done = 0; done < text.size();) {
+    const ssize_t k = ::write(fd, text.data() + done, text.size() - done);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) return false;
+    done += static_cast<std::size_t>(k);
+  }
+  return true;
+}
+
+void write_stdout(const std::string& text) {
+  if (!write_all(STDOUT_FILENO, text)) cannot_write("to the standard output");
+}
+
+// A new or regular file is replaced atomically: a temporary file beside it (same mode), then a rename,
+// so that a failure leaves the old file whole.
+void replace_regular_file(const std::string& path, const std::string& text, const struct stat* old) {
+  std::string tmp = path + ".XXXXXX";
+  const int fd = ::mkstemp(tmp.data());
+  if (fd < 0) cannot_write(path);
+  const mode_t umask_now = ::umask(0);
+  ::umask(umask_now);
+  bool ok = ::fchmod(fd, old ? old->st_mode & 07777 : 0666 & ~umask_now) == 0 && write_all(fd, text);
+  int error = errno;
+  if (::close(fd) != 0 && ok) ok = false, error = errno;
+  if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) ok = false, error = errno;
+  if (!ok) {
+    ::unlink(tmp.c_str());
+    errno = error;
+    cannot_write(path);
+  }
+}
+
+// Anything else (a device such as /dev/null, a FIFO) is written through, never replaced.
+void write_through(const std::string& path, const std::string& text) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CREAT, 0666);
+  if (fd < 0) cannot_write(path);
+  bool ok = write_all(fd, text);
+  const int error = errno;
+  if (::close(fd) != 0 && ok) ok = false;
+  else errno = error;
+  if (!ok) cannot_write(path);
+}
+
+// Writes text to a file, or to stdout for "" and "-". A symbolic link is followed: its target is what
+// gets replaced or written.
 void emit(const std::string& text, const std::string& path) {
-  if (path.empty() || path == "-") {
-    std::cout << text << std::flush;
-    return;
+  if (path.empty() || path == "-") return write_stdout(text);
+  char resolved[PATH_MAX];
+  struct stat info;
+  const bool is_link = ::lstat(path.c_str(), &info) == 0 && S_ISLNK(info.st_mode);
+  const std::string target = is_link && ::realpath(path.c_str(), resolved) ? std::string(resolved) : path;
+  if (::stat(target.c_str(), &info) != 0) {
+    if (is_link) return write_through(target, text);
+    return replace_regular_file(target, text, nullptr);
   }
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out.flush()) usage("cannot write " + path);
+  if (S_ISDIR(info.st_mode)) {
+    errno = EISDIR;
+    cannot_write(path);
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) usage("cannot write " + path);
+  if (S_ISREG(info.st_mode)) return replace_regular_file(target, text, &info);
+  write_through(target, text);
 }
 
 std::string json_bool(bool b) { return b ? "true" : "false"; }
@@ -138,22 +243,22 @@ void register_plugins_of(const po::variables_map& vm) {
 
 int cmd_list(const std::vector<std::string>& args) {
   po::options_description opts;
-  opts.add_options()("json", "JSON output")("markdown", "a Markdown table")("help,h", "help");
+  opts.add_options()("json", "JSON output")("markdown", "a Markdown table")("help,h", "this help");
   add_plugins_option(opts);
-  const auto vm = parse(args, opts);
+  const auto vm = parse("list", args, opts);
   register_plugins_of(vm);
-  emit(vm.count("json") ? list_json() : vm.count("markdown") ? list_markdown() : list_text(), "");
+  write_stdout(vm.count("json") ? list_json() : vm.count("markdown") ? list_markdown() : list_text());
   return 0;
 }
 
 int cmd_generate(const std::vector<std::string>& args) {
   po::options_description opts;
   opts.add_options()("family", po::value<std::string>()->required(), "family")(
-      "n", po::value<std::size_t>()->required(), "vertices")("reflex", po::value<std::size_t>(), "reflex vertices")(
-      "seed", po::value<std::uint64_t>()->default_value(1), "seed")(
+      "n", po::value<Count>()->required(), "vertices")("reflex", po::value<Count>(), "reflex vertices")(
+      "seed", po::value<Count>()->default_value(Count{1}, "1"), "seed")(
       "format", po::value<std::string>()->default_value("txt"), "txt|wkt|geojson")(
-      "output,o", po::value<std::string>()->default_value(""), "file");
-  const auto vm = parse(args, opts);
+      "output,o", po::value<std::string>()->default_value(""), "file")("help,h", "this help");
+  const auto vm = parse("generate", args, opts);
   Format format;
   try {
     format = parse_format(vm["format"].as<std::string>());
@@ -161,10 +266,10 @@ int cmd_generate(const std::vector<std::string>& args) {
     usage(e.what());
   }
   std::optional<std::size_t> reflex;
-  if (vm.count("reflex")) reflex = vm["reflex"].as<std::size_t>();
+  if (vm.count("reflex")) reflex = vm["reflex"].as<Count>().value;
   std::vector<Point> ring;
   try {
-    ring = generate(vm["family"].as<std::string>(), vm["n"].as<std::size_t>(), reflex, vm["seed"].as<std::uint64_t>());
+    ring = generate(vm["family"].as<std::string>(), vm["n"].as<Count>().value, reflex, vm["seed"].as<Count>().value);
   } catch (const std::invalid_argument& e) {
     usage(e.what());
   }
@@ -172,22 +277,18 @@ int cmd_generate(const std::vector<std::string>& args) {
   return 0;
 }
 
-// What `run` prints: the report on stdout and the SVG figure (empty without --svg).
+// What `run` prints: the report on stdout, the SVG figure (empty without --svg), and why the result
+// is not valid (empty when it is, or when it was not validated).
 struct RunOutput {
-  std::string out, svg;
+  std::string out, svg, invalid;
 };
 
-RunOutput run_output(const Algorithm& algo, const Polygon& polygon, bool json, bool validate_result, bool svg) {
-  Counters counters;
-  Decomposition d;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    d = algo.run(polygon, counters);
-  } catch (const std::exception& e) {
-    throw Exit{kAlgorithmFailed, algo.name + " failed: " + e.what()};
-  }
-  const double seconds = d.own_seconds ? *d.own_seconds
-                                        : std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+// "" or " (--max-memory SIZE)": what an out-of-memory message adds.
+std::string memory_note;
+
+// The result's pieces, validation and report.
+RunOutput report(const Algorithm& algo, const Polygon& polygon, const Decomposition& d, const Counters& counters,
+                 double seconds, bool json, bool validate_result, bool svg) {
   std::vector<Piece> pieces;
   std::optional<bool> valid;
   std::string reason;
@@ -211,16 +312,41 @@ RunOutput run_output(const Algorithm& algo, const Polygon& polygon, bool json, b
                  (valid ? std::string(" valid=") + (*valid ? "yes" : "NO (" + reason + ")") : "") +
                  " seconds=" + double_text(seconds) + "\n";
   }
+  if (valid == false) result.invalid = reason.empty() ? "no reason given" : reason;
   if (svg) result.svg = run_svg(polygon, d, pieces, algo.name);
   return result;
+}
+
+RunOutput run_output(const Algorithm& algo, const Polygon& polygon, bool json, bool validate_result, bool svg) {
+  Counters counters;
+  Decomposition d;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    d = algo.run(polygon, counters);
+  } catch (const std::bad_alloc&) {
+    throw Exit{kAlgorithmFailed, algo.name + " ran out of memory" + memory_note};
+  } catch (const std::exception& e) {
+    throw Exit{kAlgorithmFailed, algo.name + " failed: " + e.what()};
+  }
+  const double seconds = d.own_seconds ? *d.own_seconds
+                                        : std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  try {
+    return report(algo, polygon, d, counters, seconds, json, validate_result, svg);
+  } catch (const std::bad_alloc&) {
+    throw Exit{kAlgorithmFailed, "out of memory validating and reporting " + algo.name + "'s result" + memory_note};
+  }
 }
 
 // --max-seconds: `compute` runs in a forked child, which sends back its output (or its Exit) through a
 // pipe; at the deadline the parent kills the child and fails with one error line. A separate process is
 // the one safe way to stop an algorithm anywhere (inside GMP, inside CGAL) without its cooperation, and
-// nothing is written until the child has finished, so a stopped run leaves no partial output.
-// The message format: "STATUS\n" then, for status 0, "LENGTH\n" + out + svg; otherwise the Exit message.
-std::string encode(const RunOutput& r) { return "0\n" + std::to_string(r.out.size()) + "\n" + r.out + r.svg; }
+// nothing is written until the child has finished, so a stopped run leaves no partial output. The
+// child dies with its parent (a killed `run` leaves nothing running).
+// The message format: "STATUS\n" then, for status 0, "OUT_LENGTH SVG_LENGTH\n" + out + svg + invalid;
+// otherwise the Exit message.
+std::string encode(const RunOutput& r) {
+  return "0\n" + std::to_string(r.out.size()) + " " + std::to_string(r.svg.size()) + "\n" + r.out + r.svg + r.invalid;
+}
 std::string encode(const Exit& e) { return std::to_string(e.status) + "\n" + e.message; }
 
 RunOutput decode(const std::string& message) {
@@ -229,16 +355,11 @@ RunOutput decode(const std::string& message) {
   std::string rest = message.substr(at + 1);
   if (status != 0) throw Exit{status, rest};
   at = rest.find('\n');
-  const std::size_t length = std::stoul(rest.substr(0, at));
-  return {rest.substr(at + 1, length), rest.substr(at + 1 + length)};
-}
-
-void write_all(int fd, const std::string& text) {
-  for (std::size_t done = 0; done < text.size();) {
-    const ssize_t k = ::write(fd, text.data() + done, text.size() - done);
-    if (k <= 0 && errno != EINTR) return;
-    if (k > 0) done += static_cast<std::size_t>(k);
-  }
+  std::istringstream lengths(rest.substr(0, at));
+  std::size_t out_length = 0, svg_length = 0;
+  lengths >> out_length >> svg_length;
+  const std::string body = rest.substr(at + 1);
+  return {body.substr(0, out_length), body.substr(out_length, svg_length), body.substr(out_length + svg_length)};
 }
 
 // Reads the pipe to its end, or returns false at the deadline.
@@ -258,26 +379,35 @@ bool read_until(int fd, std::chrono::steady_clock::time_point deadline, std::str
   }
 }
 
+[[noreturn]] void run_child(int parent, int fd, const std::string& name, const std::function<RunOutput()>& compute) {
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != parent) ::_exit(0);  // the parent died before the line above
+  send_last_resort_reports_to(fd);
+  std::string message;
+  try {
+    message = encode(compute());
+  } catch (const Exit& e) {
+    message = encode(e);
+  } catch (const std::bad_alloc&) {
+    message = encode(Exit{kAlgorithmFailed, name + " ran out of memory" + memory_note});
+  } catch (const std::exception& e) {
+    message = encode(Exit{kAlgorithmFailed, name + " failed: " + e.what()});
+  }
+  write_all(fd, message);
+  ::_exit(0);
+}
+
 RunOutput with_deadline(const std::string& name, double max_seconds, const std::function<RunOutput()>& compute) {
   int fds[2];
   if (::pipe(fds) != 0) throw Exit{kAlgorithmFailed, "cannot create a pipe for --max-seconds"};
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                                                std::chrono::duration<double>(max_seconds));
-  std::cout.flush();
+  const pid_t parent = ::getpid();
   const pid_t child = ::fork();
   if (child < 0) throw Exit{kAlgorithmFailed, "cannot fork for --max-seconds"};
   if (child == 0) {
     ::close(fds[0]);
-    std::string message;
-    try {
-      message = encode(compute());
-    } catch (const Exit& e) {
-      message = encode(e);
-    } catch (const std::exception& e) {
-      message = encode(Exit{kAlgorithmFailed, name + " failed: " + e.what()});
-    }
-    write_all(fds[1], message);
-    ::_exit(0);
+    run_child(parent, fds[1], name, compute);
   }
   ::close(fds[1]);
   std::string message;
@@ -293,33 +423,72 @@ RunOutput with_deadline(const std::string& name, double max_seconds, const std::
   return decode(message);
 }
 
+// A size in bytes: digits with an optional K, M, G or T (powers of 1024).
+std::uint64_t byte_size(const std::string& text) {
+  std::size_t digits = 0;
+  while (digits < text.size() && std::isdigit(static_cast<unsigned char>(text[digits]))) ++digits;
+  const std::string unit = text.substr(digits);
+  const std::string units = "KMGT";
+  const std::size_t power = unit.empty() ? 0 : unit.size() == 1 ? units.find(unit[0]) + 1 : 0;
+  if (digits == 0 || digits > 12 || (!unit.empty() && power == 0))
+    usage("--max-memory takes a size such as 2G, 512M or 1000000 (bytes)");
+  return std::stoull(text.substr(0, digits)) << (10 * power);
+}
+
+// --max-memory: the process may grow its address space by `bytes` beyond what it holds now (its code,
+// libraries and stack reservation), through RLIMIT_AS; beyond that allocations fail, and the run ends
+// with one "ran out of memory" line.
+void limit_memory_growth(std::uint64_t bytes, const std::string& text) {
+  std::ifstream statm("/proc/self/statm");
+  std::uint64_t pages = 0;
+  if (!(statm >> pages)) throw Exit{kAlgorithmFailed, "cannot read /proc/self/statm for --max-memory"};
+  const std::uint64_t now = pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+  struct rlimit limit;
+  ::getrlimit(RLIMIT_AS, &limit);
+  limit.rlim_cur = std::min<std::uint64_t>(now + bytes, limit.rlim_max);
+  if (::setrlimit(RLIMIT_AS, &limit) != 0) throw Exit{kAlgorithmFailed, std::string("cannot set --max-memory: ") + std::strerror(errno)};
+  memory_note = " (--max-memory " + text + ")";
+}
+
+std::string svg_path(const po::variables_map& vm) {
+  if (!vm.count("svg")) return "";
+  const std::string path = vm["svg"].as<std::string>();
+  if (path.empty() || path == "-") usage("--svg takes a file name (the figure cannot share the standard output)");
+  return path;
+}
+
 int cmd_run(const std::vector<std::string>& args) {
   po::options_description opts;
   opts.add_options()("algorithm", po::value<std::string>()->required(), "algorithm")(
-      "input", po::value<std::string>()->required(), "polygon file")("json", "JSON output")(
-      "svg", po::value<std::string>(), "SVG figure")("no-validate", "skip validation")(
-      "max-seconds", po::value<double>(), "stop the algorithm (and validation) after this many seconds");
+      "input", po::value<std::string>()->required(), "polygon file, or - for the standard input")(
+      "json", "JSON output")("svg", po::value<std::string>(), "SVG figure")("no-validate", "skip validation")(
+      "max-seconds", po::value<double>(), "stop the algorithm (and validation) after this many seconds")(
+      "max-memory", po::value<std::string>(), "stop the run when it grows by more than this (2G, 512M, bytes)")(
+      "help,h", "this help");
   add_plugins_option(opts);
-  const auto vm = parse(args, opts);
+  const auto vm = parse("run", args, opts);
   register_plugins_of(vm);
   const std::string name = vm["algorithm"].as<std::string>();
   const Algorithm* algo = find_algorithm(name);
-  if (!algo) usage("unknown algorithm '" + name + "'; 'polydecomp list' names them");
+  if (!algo) usage("unknown algorithm " + quoted_input(name) + "; 'polydecomp list' names them");
   std::optional<double> max_seconds;
   if (vm.count("max-seconds")) {
     max_seconds = vm["max-seconds"].as<double>();
     if (!(*max_seconds > 0) || *max_seconds > 1e9) usage("--max-seconds takes a number of seconds above 0");
   }
+  const std::string svg = svg_path(vm);
+  if (vm.count("max-memory")) limit_memory_growth(byte_size(vm["max-memory"].as<std::string>()), vm["max-memory"].as<std::string>());
+  const std::string input = vm["input"].as<std::string>();
   std::optional<Polygon> polygon;
   try {
-    polygon = Polygon::make(read_polygon_file(vm["input"].as<std::string>()));
+    polygon = Polygon::make(read_polygon_file(input));
   } catch (const PolygonError& e) {
     throw Exit{kBadPolygon, e.what()};
+  } catch (const std::bad_alloc&) {
+    throw Exit{kAlgorithmFailed, "out of memory reading " + (input == "-" ? "the standard input" : input) + memory_note};
   }
   if (const auto why = refusal(*algo, *polygon)) throw Exit{kBadPolygon, *why};
-  const auto compute = [&] {
-    return run_output(*algo, *polygon, vm.count("json") > 0, vm.count("no-validate") == 0, vm.count("svg") > 0);
-  };
+  const auto compute = [&] { return run_output(*algo, *polygon, vm.count("json") > 0, vm.count("no-validate") == 0, !svg.empty()); };
   std::optional<RunOutput> result;
   {
     const Heartbeat heartbeat(name + " on n = " + std::to_string(polygon->size()) + ", r = " +
@@ -327,8 +496,9 @@ int cmd_run(const std::vector<std::string>& args) {
                               (max_seconds ? " (stops at " + double_text(*max_seconds) + " s)" : ""));
     result = max_seconds ? with_deadline(name, *max_seconds, compute) : compute();
   }
-  if (vm.count("svg")) emit(result->svg, vm["svg"].as<std::string>());
-  emit(result->out, "");
+  if (!svg.empty()) emit(result->svg, svg);
+  write_stdout(result->out);
+  if (!result->invalid.empty()) throw Exit{kInvalidResult, "the result of " + name + " is not valid: " + result->invalid};
   return 0;
 }
 
@@ -345,7 +515,7 @@ std::vector<int> cut_weights(const std::string& spec, const Polygon& p) {
       std::getline(in, token);
       continue;
     }
-    if (token != "0" && token != "1") usage("weights file " + spec + ": '" + token + "' is not 0 or 1");
+    if (token != "0" && token != "1") usage("weights file " + spec + ": " + quoted_input(token) + " is not 0 or 1");
     in_file_order.push_back(token == "1");
   }
   if (in_file_order.size() != p.size())
@@ -423,13 +593,15 @@ int cmd_cut(const std::vector<std::string>& args) {
   po::options_description opts;
   opts.add_options()("input", po::value<std::string>()->required(), "polygon file")(
       "weights", po::value<std::string>()->default_value("reflex"), "reflex|all|FILE")(
-      "vertical", "Theorem 3's vertical chord instead of the diagonal")("json", "JSON output");
-  const auto vm = parse(args, opts);
+      "vertical", "Theorem 3's vertical chord instead of the diagonal")("json", "JSON output")("help,h", "this help");
+  const auto vm = parse("cut", args, opts);
   std::optional<Polygon> polygon;
   try {
     polygon = Polygon::make(read_polygon_file(vm["input"].as<std::string>()));
   } catch (const PolygonError& e) {
     throw Exit{kBadPolygon, e.what()};
+  } catch (const std::bad_alloc&) {
+    throw Exit{kAlgorithmFailed, "out of memory reading " + vm["input"].as<std::string>()};
   }
   const std::vector<int> weights = cut_weights(vm["weights"].as<std::string>(), *polygon);
   std::string out;
@@ -438,17 +610,19 @@ int cmd_cut(const std::vector<std::string>& args) {
                                : fair_cut_report(*polygon, weights, vm.count("json") > 0);
   } catch (const NoFairCut& e) {
     throw Exit{kBadPolygon, std::string("no fair cut: ") + e.what()};
+  } catch (const std::bad_alloc&) {
+    throw Exit{kAlgorithmFailed, "cut ran out of memory"};
   } catch (const std::exception& e) {
     throw Exit{kAlgorithmFailed, std::string("cut failed: ") + e.what()};
   }
-  emit(out, "");
+  write_stdout(out);
   return 0;
 }
 
 int dispatch(const std::vector<std::string>& argv) {
   if (argv.empty()) usage("no command; commands: list, generate, run, cut ('polydecomp --help' shows their options)");
   if (argv[0] == "--help" || argv[0] == "-h" || argv[0] == "help") {
-    std::cout << kUsageText;
+    write_stdout(kUsageText);
     return 0;
   }
   const std::vector<std::string> rest(argv.begin() + 1, argv.end());
@@ -456,7 +630,28 @@ int dispatch(const std::vector<std::string>& argv) {
   if (argv[0] == "generate") return cmd_generate(rest);
   if (argv[0] == "run") return cmd_run(rest);
   if (argv[0] == "cut") return cmd_cut(rest);
-  usage("unknown command '" + argv[0] + "'; commands: list, generate, run, cut");
+  usage("unknown command " + quoted_input(argv[0]) + "; commands: list, generate, run, cut");
+}
+
+// The one place a failure becomes its error line and exit status.
+int run_command_line(const std::vector<std::string>& argv) {
+  try {
+    try {
+      return dispatch(argv);
+    } catch (const Help& help) {
+      write_stdout(help.text);
+      return 0;
+    }
+  } catch (const Exit& e) {
+    std::cerr << "error: " << e.message << "\n";
+    return e.status;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: out of memory" << memory_note << "\n";
+    return kAlgorithmFailed;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
 }
 
 }  // namespace
@@ -464,14 +659,7 @@ int dispatch(const std::vector<std::string>& argv) {
 
 int main(int argc, char** argv) {
   return pd::run_on_large_stack([&] {
-    try {
-      return pd::dispatch(std::vector<std::string>(argv + 1, argv + argc));
-    } catch (const pd::Exit& e) {
-      std::cerr << "error: " << e.message << "\n";
-      return e.status;
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << "\n";
-      return 1;
-    }
+    pd::install_last_resort_handlers();
+    return pd::run_command_line(std::vector<std::string>(argv + 1, argv + argc));
   });
 }

@@ -1,13 +1,24 @@
 #include "harness/large_stack.h"
 
 #include <pthread.h>
+#include <sys/resource.h>
 
 #include <cstddef>
+#include <cstdint>
 
 namespace pd {
 namespace {
 
-constexpr std::size_t kStackBytes = std::size_t(1) << 30;
+// From 1 GiB down. The reservation counts against a limit on address space (ulimit -v), so under one
+// the stack takes at most a quarter of it, leaving the rest to the heap.
+constexpr std::size_t kStackBytes[] = {std::size_t(1) << 30, std::size_t(1) << 28, std::size_t(1) << 26,
+                                       std::size_t(1) << 24};
+
+std::size_t largest_stack_allowed() {
+  struct rlimit limit;
+  if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return SIZE_MAX;
+  return static_cast<std::size_t>(limit.rlim_cur / 4);
+}
 
 struct Call {
   const std::function<int()>* body;
@@ -20,19 +31,27 @@ void* call_body(void* arg) {
   return nullptr;
 }
 
+bool start_with_stack(std::size_t bytes, Call& call, pthread_t& thread) {
+  pthread_attr_t attr;
+  if (pthread_attr_init(&attr) != 0) return false;
+  const bool started = pthread_attr_setstacksize(&attr, bytes) == 0 && pthread_create(&thread, &attr, call_body, &call) == 0;
+  pthread_attr_destroy(&attr);
+  return started;
+}
+
 }  // namespace
 
 int run_on_large_stack(const std::function<int()>& body) {
-  pthread_attr_t attr;
-  if (pthread_attr_init(&attr) != 0) return body();
   Call call{&body, 0};
   pthread_t thread;
-  const bool started =
-      pthread_attr_setstacksize(&attr, kStackBytes) == 0 && pthread_create(&thread, &attr, call_body, &call) == 0;
-  pthread_attr_destroy(&attr);
-  if (!started) return body();
-  pthread_join(thread, nullptr);
-  return call.result;
+  const std::size_t allowed = largest_stack_allowed();
+  for (const std::size_t bytes : kStackBytes) {
+    if (bytes <= allowed && start_with_stack(bytes, call, thread)) {
+      pthread_join(thread, nullptr);
+      return call.result;
+    }
+  }
+  return body();
 }
 
 }  // namespace pd

@@ -5,14 +5,17 @@
 // (a segmentation fault, not an error a user can act on). The command line and the benchmark run
 // everything on a thread whose stack is reserved at 1 GiB; the pages are committed only when touched,
 // so this costs nothing until a deep recursion needs it, and the per-call timings are unaffected.
+// Where the address space is limited (ulimit -v), the reservation takes at most a quarter of the limit
+// (256, 64 or 16 MiB), or failing that the calling thread runs the body; a recursion that then runs out
+// of stack ends with one error line (harness/last_resort.h), not a bare segmentation fault.
 #pragma once
 
 #include <functional>
 
 namespace pd {
 
-// Calls `body` on a thread with a 1 GiB stack and returns its result; if that thread cannot be
-// created, calls it on this one.
+// Calls `body` on a thread with the largest stack of 1 GiB, 256, 64 and 16 MiB that is allowed and can
+// be reserved, and returns its result; if none can, calls it on this thread.
 int run_on_large_stack(const std::function<int()>& body);
 
 }  // namespace pd

@@ -165,7 +165,11 @@ TEST_F(Cli, BadPolygonsGetOneErrorLineAndExit3) {
                    file("hole.json", R"({"type":"Polygon","coordinates":[[[0,0],[9,0],[0,9]],[[1,1],[2,1],[1,2]]]})").string(),
                3, "holes are not supported");
   expect_error("run --algorithm ear-n2 --input " + (dir_ / "missing.txt").string(), 3,
-               "cannot read " + (dir_ / "missing.txt").string());
+               "cannot read " + (dir_ / "missing.txt").string() + ": No such file or directory");
+  expect_error("run --algorithm ear-n2 --input " + dir_.string(), 3,
+               dir_.string() + " is a directory; --input takes one polygon file");
+  expect_error("run --algorithm ear-n2 --input /dev/zero", 3,
+               "/dev/zero holds a NUL byte at offset 0; polygon files are text");
 }
 
 TEST_F(Cli, BadUsageExits2) {
@@ -270,8 +274,8 @@ TEST_F(Cli, MaxSecondsKeepsAFinishedRunsOutput) {
 
 // Every earcut fixture, whole (holes and all), through every registered algorithm within its budget:
 // a valid result, or one clean error line (exit 3 for holes and self-touching rings, refused before
-// any algorithm runs; exit 4 for a peer that fails), never a crash, a hang or an invalid result from
-// one of ours. The outer rings alone go through every algorithm in test_algorithms.cpp.
+// any algorithm runs; exit 4 for a peer that fails; exit 5 and its report for a peer's invalid
+// result), never a crash, a hang or an invalid result from one of ours. The outer rings alone go through every algorithm in test_algorithms.cpp.
 TEST_F(Cli, EveryEarcutFixtureThroughEveryAlgorithm) {
   std::size_t refused = 0, runs = 0;
   for (const auto& path : fixtures::earcut_files()) {
@@ -291,7 +295,11 @@ TEST_F(Cli, EveryEarcutFixtureThroughEveryAlgorithm) {
       const std::string label = a.name + " on " + path.filename().string();
       if (r.status == 0) {
         EXPECT_EQ(r.err, "") << label;
-        EXPECT_TRUE(parse_json(r.out).get("valid")->boolean || is_peer(a)) << label;
+        EXPECT_TRUE(parse_json(r.out).get("valid")->boolean) << label;
+      } else if (r.status == 5) {
+        EXPECT_TRUE(is_peer(a)) << label << ": " << r.err;
+        EXPECT_FALSE(parse_json(r.out).get("valid")->boolean) << label;
+        EXPECT_EQ(r.err.rfind("error: the result of " + a.name + " is not valid: ", 0), 0u) << label;
       } else {
         EXPECT_TRUE(is_peer(a)) << label << ": " << r.err;
         EXPECT_EQ(r.status, 4) << label;

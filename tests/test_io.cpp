@@ -30,7 +30,73 @@ TEST(Readers, PlainTextErrors) {
   EXPECT_EQ(error_of("0 0\n1 x\n"), "line 2: 'x' is not a number");
   EXPECT_EQ(error_of("0 0 0\n"), "line 1: expected 'x y', found 3 numbers");
   EXPECT_EQ(error_of("4\n0 0\n1 0\n0 1\n"), "the count line says 4 vertices but 3 follow");
-  EXPECT_EQ(error_of("\x01\x02garbage"), "line 1: '\x01\x02garbage' is not a number");
+  EXPECT_EQ(error_of("2\n0 0\n1 0\n0 1\n0 0\n"), "the count line says 2 vertices but 4 follow");
+}
+
+// The count line may count the repeated closing vertex or leave it out.
+TEST(Readers, CountLineWithOrWithoutTheClosingVertex) {
+  EXPECT_EQ(parse_polygon("3\n0 0\n4 0\n0 3\n0 0\n").size(), 4u);
+  EXPECT_EQ(parse_polygon("4\n0 0\n4 0\n0 3\n0 0\n").size(), 4u);
+}
+
+// Input quoted in a message is escaped: no raw control byte, no NUL cutting the line short.
+TEST(Readers, QuotedInputIsEscaped) {
+  EXPECT_EQ(error_of("\x01\x02garbage"), "line 1: '\\x01\\x02garbage' is not a number");
+  EXPECT_EQ(error_of(std::string("0 0\n1 \0x\n", 9)), "line 2: '\\x00x' is not a number");
+  EXPECT_EQ(error_of("0 0\n\x1b[31m 1\n"), "line 2: '\\x1b[31m' is not a number");
+  EXPECT_NE(error_of("0 0\n" + std::string(100, '9') + "x 1\n").find("9999...' is not a number"), std::string::npos);
+}
+
+// What a coordinate is (core/coordinate.h), in every reader: these forms are read whole or refused,
+// never read in part or changed.
+const std::vector<std::pair<std::string, std::string>> kBadNumbers = {
+    {"...", "'...' is not a number"},
+    {"e", "'e' is not a number"},
+    {"-", "'-' is not a number"},
+    {"+", "'+' is not a number"},
+    {"1.2.3", "'1.2.3' is not a number"},
+    {"1-2", "'1-2' is not a number"},
+    {"1e", "'1e' is not a number"},
+    {"0x10", "'0x10' is not a number"},
+    {"1e-400", "'1e-400' is too small for a double (it is not 0)"},
+    {"-4.9e-324", "'-4.9e-324' is too small for a double (it is not 0)"},
+    {"1e400", "'1e400' is too large for a double"},
+    {"9007199254740993", "'9007199254740993' is not exactly a double (the nearest is 9007199254740992)"},
+    {"-18446744073709551617", "'-18446744073709551617' is not exactly a double (the nearest is -18446744073709551616)"},
+};
+
+TEST(Readers, PlainTextAndWktReadNumbersWholeOrNotAtAll) {
+  for (const auto& [number, why] : kBadNumbers) {
+    EXPECT_EQ(error_of("0 0\n1 0\n0 " + number + "\n"), "line 3: " + why) << number;
+    EXPECT_EQ(error_of("POLYGON ((0 0, 1 0, 0 " + number + ", 0 0))"), "WKT: " + why) << number;
+  }
+}
+
+TEST(Readers, GeoJsonReadsNumbersWholeOrNotAtAll) {
+  for (const std::string form : {"...", "e", "-", "+", "1.2.3", "1-2", "01", "1.", ".5", "1e", "NaN", "0x10"}) {
+    const std::string why = error_of(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[0,)" + form + "]]]}");
+    EXPECT_EQ(why.rfind("JSON: syntax error", 0), 0u) << form << ": " << why;
+  }
+  // JSON's grammar refuses the malformed forms first; nlohmann refuses an overflow itself, as "JSON:
+  // ... at offset N" with our reason.
+  for (const auto& [number, why] : kBadNumbers) {
+    if (why.find("not a number") != std::string::npos) continue;
+    const std::string prefix = number == "1e400" ? "JSON: " : "GeoJSON: ";
+    const std::string geojson = error_of(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[0,)" + number + "]]]}");
+    const std::string earcut = error_of("[[0,0],[1,0],[0," + number + "]]");
+    EXPECT_EQ(geojson.rfind(prefix + why, 0), 0u) << geojson;
+    EXPECT_EQ(earcut.rfind(prefix + why, 0), 0u) << earcut;
+  }
+}
+
+TEST(Readers, NumbersThatAreExactlyDoublesAreRead) {
+  EXPECT_EQ(parse_polygon("0 9007199254740992\n1 0\n0 1\n")[0].y(), 9007199254740992.0);
+  EXPECT_EQ(parse_polygon("0 18446744073709551616\n1 0\n0 1\n")[0].y(), 18446744073709551616.0);
+  EXPECT_EQ(parse_polygon("-0 0.1\n1 0\n0 1\n")[0].y(), 0.1);
+  EXPECT_EQ(parse_polygon("0 0e-999\n1 0\n0 1\n")[0].y(), 0.0);
+  EXPECT_EQ(parse_polygon("0 2.2250738585072014e-308\n1 0\n0 1\n")[0].y(), 2.2250738585072014e-308);
+  EXPECT_EQ(parse_polygon("[[0,9007199254740992],[1,0],[0,1]]")[0].y(), 9007199254740992.0);
+  EXPECT_EQ(parse_polygon("POLYGON ((0 1.5e3, 1 0, 0 1, 0 1.5e3))")[0].y(), 1500.0);
 }
 
 TEST(Readers, Wkt) {
@@ -38,9 +104,38 @@ TEST(Readers, Wkt) {
   EXPECT_EQ(parse_polygon("polygon((0 0,4 0,0 3))"), kTriangle);
   EXPECT_EQ(error_of("POLYGON ((0 0, 4 0, 0 3), (1 1, 2 1, 1 2))"), "holes are not supported");
   EXPECT_EQ(error_of("POLYGON EMPTY"), "the polygon is empty");
-  EXPECT_EQ(error_of("MULTIPOLYGON (((0 0, 1 0, 0 1)))"), "multipolygons are not supported");
-  EXPECT_EQ(error_of("POLYGON ((0 0, 4 0, 0 a))"), "WKT: '0 a' is not a point 'x y'");
-  EXPECT_EQ(error_of("POLYGON ((0 0, 4 0, 0 3)"), "WKT: unexpected text after the ring");
+  EXPECT_EQ(error_of("POLYGON ((0 0, 4 0, 0 a))"), "WKT: 'a' is not a number");
+  EXPECT_EQ(error_of("POLYGON ((0 0, 4 0, 0 3)"), "WKT: expected ')' at offset 24, found the end");
+  EXPECT_EQ(error_of("MULTIPOLYGON (((0 0, 1 0, 0 1)), ((5 5, 6 5, 5 6)))"), "multipolygons are not supported");
+  EXPECT_EQ(parse_polygon("MULTIPOLYGON (((0 0, 4 0, 0 3)))"), kTriangle);  // one part, as ogr2ogr writes
+}
+
+// Only the format: a keyword that merely starts like one, text between the keyword and its rings,
+// a trailing comma, a missing coordinate, text after the end are refused.
+TEST(Readers, WktIsReadByItsGrammar) {
+  EXPECT_EQ(error_of("POLYGONAL ((0 0, 1 0, 0 1))"), "WKT: 'POLYGONAL' is not POLYGON or MULTIPOLYGON");
+  EXPECT_EQ(error_of("POLYGON garbage ((0 0, 1 0, 0 1))"), "WKT: expected '(' at offset 8, found 'garbage ((0 0, 1 0, '");
+  EXPECT_EQ(error_of("POLYGON ((0 0, 1 0, 0 1,))"), "WKT: expected a coordinate at offset 24, found '))'");
+  EXPECT_EQ(error_of("POLYGON ((0 0, 1 0, 0))"), "WKT: expected a coordinate at offset 21, found '))'");
+  EXPECT_EQ(error_of("POLYGON ((0 0, 1 0, 0 1 2))"), "WKT: expected ')' at offset 24, found '2))'");
+  EXPECT_EQ(error_of("POLYGON ((0 0, 1 0, 0 1)) x"), "WKT: unexpected text after the polygon at offset 26, found 'x'");
+  EXPECT_EQ(error_of("POLYGON Z ((0 0 0, 1 0 0, 0 1 0))"), "WKT with Z or M coordinates is not supported");
+}
+
+// A Feature's geometry is a geometry; a FeatureCollection holds Features; JSON's own grammar (no
+// trailing comma) holds; a UTF-8 byte order mark is not content.
+TEST(Readers, GeoJsonIsReadByItsGrammar) {
+  const std::string poly = R"({"type":"Polygon","coordinates":[[[0,0],[4,0],[0,3]]]})";
+  const std::string feature = R"({"type":"Feature","properties":null,"geometry":)" + poly + "}";
+  EXPECT_EQ(parse_polygon("\xEF\xBB\xBF" + poly), kTriangle);
+  EXPECT_EQ(parse_polygon(R"({"type":"FeatureCollection","features":[)" + feature + "]}"), kTriangle);
+  EXPECT_EQ(error_of(R"({"type":"Feature","geometry":)" + feature + "}"), "GeoJSON: a Feature's geometry cannot be a Feature");
+  EXPECT_EQ(error_of(R"({"type":"FeatureCollection","features":[)" + poly + "]}"),
+            "GeoJSON: a FeatureCollection's features must be Features");
+  EXPECT_EQ(error_of(R"({"type":"Feature","geometry":null})"), "GeoJSON: the Feature has no geometry");
+  EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0],[4,0],[0,3],]]})").rfind("JSON: syntax error", 0), 0u);
+  EXPECT_EQ(error_of(R"({"type":"MultiPolygon","coordinates":[[[[0,0],[4,0],[0,3]]],[[[5,5],[6,5],[5,6]]]]})"),
+            "multipolygons are not supported");
 }
 
 TEST(Readers, GeoJson) {
@@ -50,7 +145,7 @@ TEST(Readers, GeoJson) {
   EXPECT_EQ(parse_polygon("[[[0,0],[4,0],[0,3]]]"), kTriangle);  // earcut's array of rings
   EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0],[4,0],[0,3]],[[1,1],[2,1],[1,2]]]})"),
             "holes are not supported");
-  EXPECT_EQ(error_of(R"({"type":"Point","coordinates":[0,0]})"), "GeoJSON: a Point is not a Polygon");
+  EXPECT_EQ(error_of(R"({"type":"Point","coordinates":[0,0]})"), "GeoJSON: a 'Point' is not a Polygon or MultiPolygon");
   EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[]})"), "the polygon is empty");
   EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0],[4,"a"],[0,3]]]})"),
             "GeoJSON: a coordinate is not a number");
@@ -64,10 +159,10 @@ TEST(Readers, NonFiniteNumbersReachThePolygonCheck) {
 }
 
 TEST(Writers, FormatsRoundTrip) {
-  const std::vector<Point> ring = {{0, 0}, {0.1, 0}, {1e-300, 3}};
+  const std::vector<Point> ring = {{0, 0}, {0.1, 0}, {1e-300, 3}, {1.2345678901234568e20, -1152921504606846976.0}};
   for (Format f : {Format::Txt, Format::Wkt, Format::GeoJson}) {
     auto back = parse_polygon(format_polygon(ring, f));
-    if (back.size() == 4) back.pop_back();  // WKT and GeoJSON close the ring
+    if (back.size() == ring.size() + 1) back.pop_back();  // WKT and GeoJSON close the ring
     EXPECT_EQ(back, ring);
   }
 }

@@ -97,8 +97,9 @@ TEST_F(Plugins, InputItDoesNotTakeIsRefusedBeforeRunning) {
 TEST_F(Plugins, AWrongDecompositionIsReportedInvalid) {
   add_plugin("one-triangle", "    print(json.dumps({'pieces': [[0, 1, 2]], 'steiner': [], 'seconds': 0}), flush=True)");
   const Result r = run_on("one-triangle", "square.txt");
-  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(r.status, 5) << r.err;
   EXPECT_FALSE(parse_json(r.out).get("valid")->boolean);
+  EXPECT_EQ(r.err.rfind("error: the result of one-triangle is not valid: ", 0), 0u) << r.err;
 }
 
 TEST_F(Plugins, ExactSteinerPointsAreRead) {

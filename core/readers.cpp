@@ -1,0 +1,345 @@
+// The readers of core/io.h: plain text, WKT and GeoJSON (with earcut's ring arrays). Each keeps to its
+// format's grammar and refuses anything else with one reason; every coordinate is read by the rule of
+// core/coordinate.h. A WKT or GeoJSON polygon is read whole (every ring, every part) before holes and
+// multipolygons are refused, so that the refusal names what the input really holds.
+#include "core/coordinate.h"
+#include "core/io.h"
+#include "core/json.h"
+
+#include <sys/stat.h>
+
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <string_view>
+
+namespace pd {
+namespace {
+
+[[noreturn]] void bad(const std::string& why) { throw PolygonError(why); }
+
+using Ring = std::vector<Point>;
+using Rings = std::vector<Ring>;  // outer ring, then holes
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// `where` names the place for the message ("WKT: ", "line 3: "); it is only called on a failure.
+template <typename Where>
+double coordinate(std::string_view text, const Where& where) {
+  std::string why;
+  const std::optional<double> d = coordinate_value(text, why);
+  if (!d) bad(where() + why);
+  return *d;
+}
+
+std::string in_wkt() { return "WKT: "; }
+std::string in_geojson() { return "GeoJSON: "; }
+
+// The one polygon a file may hold for now: one part, one ring.
+Ring single_ring(std::vector<Rings> parts) {
+  if (parts.size() > 1) bad("multipolygons are not supported");
+  if (parts.empty() || parts[0].empty()) bad("the polygon is empty");
+  if (parts[0].size() > 1) bad("holes are not supported");
+  return std::move(parts[0][0]);
+}
+
+// ---- plain text: `x y` per line, '#' comments, an optional count line before the first vertex.
+
+std::vector<std::string_view> fields_of(std::string_view line) {
+  std::vector<std::string_view> fields;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= line.size(); ++i) {
+    if (i == line.size() || line[i] == ' ' || line[i] == '\t' || line[i] == ',' || line[i] == '\r') {
+      if (i > start) fields.push_back(line.substr(start, i - start));
+      start = i + 1;
+    }
+  }
+  return fields;
+}
+
+// The count line may count the repeated closing vertex or not.
+void check_count(std::size_t count, const Ring& ring) {
+  const bool closed = ring.size() >= 2 && ring.front() == ring.back();
+  if (count == ring.size() || (closed && count + 1 == ring.size())) return;
+  bad("the count line says " + std::to_string(count) + " vertices but " + std::to_string(ring.size()) + " follow");
+}
+
+Ring parse_txt(std::string_view content) {
+  Ring ring;
+  std::optional<std::size_t> count;
+  std::size_t line_no = 0;
+  while (!content.empty()) {
+    ++line_no;
+    const std::size_t end = std::min(content.find('\n'), content.size());
+    std::string_view line = content.substr(0, end);
+    content.remove_prefix(std::min(end + 1, content.size()));
+    line = line.substr(0, std::min(line.find('#'), line.size()));
+    const auto fields = fields_of(line);
+    if (fields.empty()) continue;
+    const auto where = [line_no] { return "line " + std::to_string(line_no) + ": "; };
+    if (fields.size() == 1 && ring.empty() && !count) {
+      const double c = coordinate(fields[0], where);
+      if (!(c >= 0 && c <= 1e9 && c == static_cast<double>(static_cast<std::size_t>(c))))
+        bad(where() + "a count line must hold a vertex count");
+      count = static_cast<std::size_t>(c);
+      continue;
+    }
+    if (fields.size() != 2)
+      bad(where() + "expected 'x y', found " + std::to_string(fields.size()) + " numbers");
+    const double x = coordinate(fields[0], where);
+    ring.emplace_back(x, coordinate(fields[1], where));
+  }
+  if (ring.empty()) bad("the input holds no vertices");
+  if (count) check_count(*count, ring);
+  return ring;
+}
+
+// ---- WKT (OGC 06-103r4, 7.2): POLYGON | MULTIPOLYGON, EMPTY, rings of `x y` points.
+
+class WktReader {
+ public:
+  explicit WktReader(std::string_view text) : text_(text) {}
+
+  std::vector<Rings> read() {
+    const std::string tag = upper(word());
+    if (tag != "POLYGON" && tag != "MULTIPOLYGON") bad("WKT: " + quoted_input(tag) + " is not POLYGON or MULTIPOLYGON");
+    std::vector<Rings> parts;
+    if (peek_word() == "Z" || peek_word() == "M" || peek_word() == "ZM") bad("WKT with Z or M coordinates is not supported");
+    if (peek_word() == "EMPTY") {
+      word();
+    } else if (tag == "POLYGON") {
+      parts.push_back(polygon_text());
+    } else {
+      for (expect('('); parts.push_back(polygon_text()), next_is(',');) {
+      }
+      expect(')');
+    }
+    skip_space();
+    if (at_ < text_.size()) fail("unexpected text after the " + lower(tag));
+    return parts;
+  }
+
+ private:
+  Rings polygon_text() {
+    Rings rings;
+    for (expect('('); rings.push_back(ring_text()), next_is(',');) {
+    }
+    expect(')');
+    return rings;
+  }
+  Ring ring_text() {
+    Ring ring;
+    for (expect('('); ring.push_back(point()), next_is(',');) {
+    }
+    expect(')');
+    return ring;
+  }
+  Point point() {
+    const double x = number(), y = number();
+    return Point(x, y);
+  }
+  double number() {
+    skip_space();
+    const std::size_t start = at_;
+    while (at_ < text_.size() && !is_space(text_[at_]) && text_[at_] != ',' && text_[at_] != '(' && text_[at_] != ')')
+      ++at_;
+    if (at_ == start) fail("expected a coordinate");
+    return coordinate(text_.substr(start, at_ - start), in_wkt);
+  }
+  std::string word() {
+    skip_space();
+    const std::size_t start = at_;
+    while (at_ < text_.size() && std::isalpha(static_cast<unsigned char>(text_[at_]))) ++at_;
+    return std::string(text_.substr(start, at_ - start));
+  }
+  std::string peek_word() {
+    const std::size_t saved = at_;
+    const std::string w = upper(word());
+    at_ = saved;
+    return w;
+  }
+  void expect(char c) {
+    skip_space();
+    if (at_ >= text_.size() || text_[at_] != c) fail(std::string("expected '") + c + "'");
+    ++at_;
+  }
+  bool next_is(char c) {
+    skip_space();
+    if (at_ < text_.size() && text_[at_] == c) return ++at_, true;
+    return false;
+  }
+  void skip_space() {
+    while (at_ < text_.size() && is_space(text_[at_])) ++at_;
+  }
+  [[noreturn]] void fail(const std::string& what) {
+    const std::string_view found = at_ < text_.size() ? text_.substr(at_, 20) : std::string_view("the end");
+    bad("WKT: " + what + " at offset " + std::to_string(at_) + ", found " +
+        (at_ < text_.size() ? quoted_input(found, 20) : std::string("the end")));
+  }
+  static std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+  }
+  static std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  }
+
+  std::string_view text_;
+  std::size_t at_ = 0;
+};
+
+// ---- GeoJSON (RFC 7946): Polygon, MultiPolygon, a Feature of one, a FeatureCollection of Features;
+// earcut's fixtures: a bare array of rings, or one ring.
+
+Ring ring_of(const Json& ring) {
+  if (!ring.is_array()) bad("GeoJSON: a ring must be an array of positions");
+  Ring out;
+  if (ring.is_packed()) {
+    if (ring.width < 2) bad("GeoJSON: a position must be [x, y]");
+    if (ring.width > 2) bad("GeoJSON: positions with more than 2 coordinates are not supported");
+    out.reserve(ring.packed.size() / 2);
+    for (std::size_t k = 0; k < ring.packed.size(); k += 2) out.emplace_back(ring.packed[k], ring.packed[k + 1]);
+    return out;
+  }
+  for (const Json& pos : ring.items) {
+    if (!pos.is_array() || pos.items.size() < 2) bad("GeoJSON: a position must be [x, y]");
+    if (pos.items.size() > 2) bad("GeoJSON: positions with more than 2 coordinates are not supported");
+    if (!pos.items[0].is_number() || !pos.items[1].is_number()) bad("GeoJSON: a coordinate is not a number");
+    const double x = coordinate(pos.items[0].text, in_geojson);
+    out.emplace_back(x, coordinate(pos.items[1].text, in_geojson));
+  }
+  return out;
+}
+
+Rings rings_of(const Json& rings) {
+  if (!rings.is_array() || rings.is_packed()) bad("GeoJSON: a polygon's coordinates must be an array of rings");
+  Rings out;
+  for (const Json& ring : rings.items) out.push_back(ring_of(ring));
+  return out;
+}
+
+const std::string& type_of(const Json& doc) {
+  if (!doc.is_object()) bad("GeoJSON: expected an object");
+  const Json* type = doc.get("type");
+  if (!type || type->type != Json::Type::String) bad("GeoJSON: missing \"type\"");
+  return type->text;
+}
+
+const Json& member(const Json& doc, const char* name, const std::string& type) {
+  const Json* m = doc.get(name);
+  if (!m) bad("GeoJSON: the " + type + " has no \"" + name + "\"");
+  return *m;
+}
+
+std::vector<Rings> geometry_parts(const Json& geometry) {
+  const std::string& type = type_of(geometry);
+  const Json& coordinates = member(geometry, "coordinates", type);
+  if (type == "Polygon") return {rings_of(coordinates)};
+  if (type == "MultiPolygon") {
+    if (!coordinates.is_array() || coordinates.is_packed()) bad("GeoJSON: a MultiPolygon's coordinates must be an array of polygons");
+    std::vector<Rings> parts;
+    for (const Json& polygon : coordinates.items) parts.push_back(rings_of(polygon));
+    return parts;
+  }
+  bad("GeoJSON: a " + quoted_input(type, 30) + " is not a Polygon or MultiPolygon");
+}
+
+std::vector<Rings> feature_parts(const Json& feature) {
+  const Json& geometry = member(feature, "geometry", "Feature");
+  if (geometry.type == Json::Type::Null) bad("GeoJSON: the Feature has no geometry");
+  const std::string& type = type_of(geometry);
+  if (type == "Feature" || type == "FeatureCollection") bad("GeoJSON: a Feature's geometry cannot be a " + type);
+  return geometry_parts(geometry);
+}
+
+std::vector<Rings> geojson_parts(const Json& doc) {
+  if (doc.is_array()) {  // earcut's fixtures: an array of rings, or one ring
+    if (doc.is_packed()) return {{ring_of(doc)}};
+    if (!doc.items.empty() && doc.items[0].is_array() && (doc.items[0].is_packed() || doc.items[0].items.empty() ||
+                                                         doc.items[0].items[0].is_array()))
+      return {rings_of(doc)};
+    return {{ring_of(doc)}};
+  }
+  const std::string& type = type_of(doc);
+  if (type == "Feature") return feature_parts(doc);
+  if (type == "FeatureCollection") {
+    const Json& features = member(doc, "features", type);
+    if (!features.is_array() || features.items.size() != 1)
+      bad("GeoJSON: a FeatureCollection must hold exactly one feature");
+    if (type_of(features.items[0]) != "Feature") bad("GeoJSON: a FeatureCollection's features must be Features");
+    return feature_parts(features.items[0]);
+  }
+  return geometry_parts(doc);
+}
+
+std::string_view without_bom(std::string_view content) {
+  return content.substr(0, 3) == "\xEF\xBB\xBF" ? content.substr(3) : content;
+}
+
+bool starts_with_word(std::string_view text, std::string_view word) {
+  if (text.size() < word.size()) return false;
+  for (std::size_t i = 0; i < word.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(text[i])) != word[i]) return false;
+  return true;
+}
+
+// Reads a stream whole, refusing a NUL byte as soon as it arrives (binary data, or /dev/zero, which
+// would otherwise be read until memory runs out).
+std::string read_text(std::FILE* in, const std::string& name) {
+  std::string text;
+  char buffer[1 << 16];
+  for (std::size_t k; (k = std::fread(buffer, 1, sizeof buffer, in)) > 0;) {
+    if (const void* nul = std::memchr(buffer, '\0', k))
+      bad(name + " holds a NUL byte at offset " +
+          std::to_string(text.size() + static_cast<std::size_t>(static_cast<const char*>(nul) - buffer)) +
+          "; polygon files are text");
+    text.append(buffer, k);
+  }
+  if (std::ferror(in)) bad("cannot read " + name + ": " + std::strerror(errno));
+  return text;
+}
+
+}  // namespace
+
+std::vector<Point> parse_polygon(const std::string& input) {
+  const std::string_view content = without_bom(input);
+  const std::string_view start = trim(content);
+  if (start.empty()) bad("the input is empty");
+  if (start[0] == '{' || start[0] == '[') {
+    try {
+      return single_ring(geojson_parts(parse_json(content, true)));
+    } catch (const JsonError& e) {
+      bad(e.what());
+    }
+  }
+  if (starts_with_word(start, "polygon") || starts_with_word(start, "multipolygon"))
+    return single_ring(WktReader(start).read());
+  return parse_txt(content);
+}
+
+std::vector<Point> read_polygon_file(const std::string& path) {
+  if (path == "-") return parse_polygon(read_text(stdin, "the standard input"));
+  struct stat info;
+  if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+    bad(path + " is a directory; --input takes one polygon file");
+  std::FILE* in = std::fopen(path.c_str(), "rb");
+  if (!in) bad("cannot read " + path + ": " + std::strerror(errno));
+  std::string text;
+  try {
+    text = read_text(in, path);
+  } catch (...) {
+    std::fclose(in);
+    throw;
+  }
+  std::fclose(in);
+  return parse_polygon(text);
+}
+
+}  // namespace pd
