@@ -1,4 +1,4 @@
-// The polydecomp command line: list | generate | run | cut (see docs/CONTRACT.md).
+// The polydecomp command line: list | generate | run | cut | check (see docs/CONTRACT.md).
 //
 // Exit status: 0 success, 2 bad usage, 3 bad polygon, 4 the run failed (the algorithm failed, ran out
 // of memory or stack, or `--max-seconds` / `--max-memory` stopped it), 5 `run`'s result is not valid
@@ -16,6 +16,7 @@
 #include "harness/last_resort.h"
 #include "harness/plugins.h"
 #include "harness/progress.h"
+#include "harness/write_all.h"
 
 #include <boost/program_options.hpp>
 
@@ -80,7 +81,8 @@ const char* kUsageText =
     "       polydecomp generate --family F --n N [--reflex R] [--seed S] [--format txt|wkt|geojson] [-o FILE]\n"
     "       polydecomp run --algorithm A --input FILE|- [--json] [--svg FILE] [--no-validate] [--max-seconds S]\n"
     "                      [--max-memory SIZE] [--plugins DIR]...\n"
-    "       polydecomp cut --input FILE [--weights reflex|all|FILE] [--vertical] [--json]\n";
+    "       polydecomp cut --input FILE [--weights reflex|all|FILE] [--vertical] [--json]\n"
+    "       polydecomp check --input FILE|- [--json]\n";
 
 // The usage lines of `command` in kUsageText.
 std::string usage_of(const std::string& command) {
@@ -115,17 +117,6 @@ po::variables_map parse(const std::string& command, const std::vector<std::strin
 
 [[noreturn]] void cannot_write(const std::string& what) {
   throw Exit{kCannotWrite, "cannot write " + what + ": " + std::strerror(errno)};
-}
-
-// Writes all of `text` to `fd`; false (errno set) on a failure.
-bool write_all(int fd, const std::string& text) {
-  for (std::size_t done = 0; done < text.size();) {
-    const ssize_t k = ::write(fd, text.data() + done, text.size() - done);
-    if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) return false;
-    done += static_cast<std::size_t>(k);
-  }
-  return true;
 }
 
 void write_stdout(const std::string& text) {
@@ -450,6 +441,18 @@ void limit_memory_growth(std::uint64_t bytes, const std::string& text) {
   memory_note = " (--max-memory " + text + ")";
 }
 
+// The polygon of --input, through the one checked door: a bad polygon is exit 3, running out of memory
+// while reading it exit 4.
+Polygon read_input(const std::string& input) {
+  try {
+    return Polygon::make(read_polygon_file(input));
+  } catch (const PolygonError& e) {
+    throw Exit{kBadPolygon, e.what()};
+  } catch (const std::bad_alloc&) {
+    throw Exit{kAlgorithmFailed, "out of memory reading " + (input == "-" ? "the standard input" : input) + memory_note};
+  }
+}
+
 std::string svg_path(const po::variables_map& vm) {
   if (!vm.count("svg")) return "";
   const std::string path = vm["svg"].as<std::string>();
@@ -478,21 +481,13 @@ int cmd_run(const std::vector<std::string>& args) {
   }
   const std::string svg = svg_path(vm);
   if (vm.count("max-memory")) limit_memory_growth(byte_size(vm["max-memory"].as<std::string>()), vm["max-memory"].as<std::string>());
-  const std::string input = vm["input"].as<std::string>();
-  std::optional<Polygon> polygon;
-  try {
-    polygon = Polygon::make(read_polygon_file(input));
-  } catch (const PolygonError& e) {
-    throw Exit{kBadPolygon, e.what()};
-  } catch (const std::bad_alloc&) {
-    throw Exit{kAlgorithmFailed, "out of memory reading " + (input == "-" ? "the standard input" : input) + memory_note};
-  }
-  if (const auto why = refusal(*algo, *polygon)) throw Exit{kBadPolygon, *why};
-  const auto compute = [&] { return run_output(*algo, *polygon, vm.count("json") > 0, vm.count("no-validate") == 0, !svg.empty()); };
+  const Polygon polygon = read_input(vm["input"].as<std::string>());
+  if (const auto why = refusal(*algo, polygon)) throw Exit{kBadPolygon, *why};
+  const auto compute = [&] { return run_output(*algo, polygon, vm.count("json") > 0, vm.count("no-validate") == 0, !svg.empty()); };
   std::optional<RunOutput> result;
   {
-    const Heartbeat heartbeat(name + " on n = " + std::to_string(polygon->size()) + ", r = " +
-                              std::to_string(polygon->reflex_count()) +
+    const Heartbeat heartbeat(name + " on n = " + std::to_string(polygon.size()) + ", r = " +
+                              std::to_string(polygon.reflex_count()) +
                               (max_seconds ? " (stops at " + double_text(*max_seconds) + " s)" : ""));
     result = max_seconds ? with_deadline(name, *max_seconds, compute) : compute();
   }
@@ -595,19 +590,12 @@ int cmd_cut(const std::vector<std::string>& args) {
       "weights", po::value<std::string>()->default_value("reflex"), "reflex|all|FILE")(
       "vertical", "Theorem 3's vertical chord instead of the diagonal")("json", "JSON output")("help,h", "this help");
   const auto vm = parse("cut", args, opts);
-  std::optional<Polygon> polygon;
-  try {
-    polygon = Polygon::make(read_polygon_file(vm["input"].as<std::string>()));
-  } catch (const PolygonError& e) {
-    throw Exit{kBadPolygon, e.what()};
-  } catch (const std::bad_alloc&) {
-    throw Exit{kAlgorithmFailed, "out of memory reading " + vm["input"].as<std::string>()};
-  }
-  const std::vector<int> weights = cut_weights(vm["weights"].as<std::string>(), *polygon);
+  const Polygon polygon = read_input(vm["input"].as<std::string>());
+  const std::vector<int> weights = cut_weights(vm["weights"].as<std::string>(), polygon);
   std::string out;
   try {
-    out = vm.count("vertical") ? vertical_report(*polygon, weights, vm.count("json") > 0)
-                               : fair_cut_report(*polygon, weights, vm.count("json") > 0);
+    out = vm.count("vertical") ? vertical_report(polygon, weights, vm.count("json") > 0)
+                               : fair_cut_report(polygon, weights, vm.count("json") > 0);
   } catch (const NoFairCut& e) {
     throw Exit{kBadPolygon, std::string("no fair cut: ") + e.what()};
   } catch (const std::bad_alloc&) {
@@ -619,8 +607,23 @@ int cmd_cut(const std::vector<std::string>& args) {
   return 0;
 }
 
+// Reads and checks a polygon, as `run` does before any algorithm: its size, notches and orientation.
+int cmd_check(const std::vector<std::string>& args) {
+  po::options_description opts;
+  opts.add_options()("input", po::value<std::string>()->required(), "polygon file, or - for the standard input")(
+      "json", "JSON output")("help,h", "this help");
+  const auto vm = parse("check", args, opts);
+  const Polygon p = read_input(vm["input"].as<std::string>());
+  const std::string n = std::to_string(p.size()), r = std::to_string(p.reflex_count());
+  write_stdout(vm.count("json") ? "{\"n\": " + n + ", \"reflex\": " + r + ", \"clockwise\": " +
+                                      json_bool(p.input_was_clockwise()) + "}\n"
+                                : "polygon: n=" + n + " reflex=" + r + " orientation=" +
+                                      (p.input_was_clockwise() ? "clockwise" : "counter-clockwise") + "\n");
+  return 0;
+}
+
 int dispatch(const std::vector<std::string>& argv) {
-  if (argv.empty()) usage("no command; commands: list, generate, run, cut ('polydecomp --help' shows their options)");
+  if (argv.empty()) usage("no command; commands: list, generate, run, cut, check ('polydecomp --help' shows their options)");
   if (argv[0] == "--help" || argv[0] == "-h" || argv[0] == "help") {
     write_stdout(kUsageText);
     return 0;
@@ -630,7 +633,8 @@ int dispatch(const std::vector<std::string>& argv) {
   if (argv[0] == "generate") return cmd_generate(rest);
   if (argv[0] == "run") return cmd_run(rest);
   if (argv[0] == "cut") return cmd_cut(rest);
-  usage("unknown command " + quoted_input(argv[0]) + "; commands: list, generate, run, cut");
+  if (argv[0] == "check") return cmd_check(rest);
+  usage("unknown command " + quoted_input(argv[0]) + "; commands: list, generate, run, cut, check");
 }
 
 // The one place a failure becomes its error line and exit status.

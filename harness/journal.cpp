@@ -1,6 +1,7 @@
 #include "harness/journal.h"
 
 #include "core/json.h"
+#include "harness/write_all.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -49,13 +50,7 @@ Journal::~Journal() { close(fd_); }
 void Journal::append(const std::string& object) {
   const std::string line = (needs_newline_ ? "\n" : "") + object + "\n";
   needs_newline_ = false;
-  std::size_t done = 0;
-  while (done < line.size()) {
-    const ssize_t n = write(fd_, line.data() + done, line.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw std::runtime_error(std::string("cannot write the journal: ") + std::strerror(errno));
-    done += static_cast<std::size_t>(n);
-  }
+  if (!write_all(fd_, line)) throw std::runtime_error(std::string("cannot write the journal: ") + std::strerror(errno));
 }
 
 std::map<std::string, JournalRecord> Journal::finished(const std::string& path) {

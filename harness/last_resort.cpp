@@ -1,5 +1,7 @@
 #include "harness/last_resort.h"
 
+#include "harness/write_all.h"
+
 #include <gmp.h>
 #include <pthread.h>
 #include <signal.h>
@@ -7,7 +9,6 @@
 
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 
 namespace pd {
 namespace {
@@ -15,15 +16,6 @@ namespace {
 constexpr int kRunFailed = 4;
 int report_fd = -1;  // -1: stderr, as "error: REASON"
 const char* stack_lowest = nullptr;  // of the thread that installed the handlers
-
-void write_all(int fd, const char* text) {
-  for (std::size_t left = std::strlen(text); left > 0;) {
-    const ssize_t k = ::write(fd, text, left);
-    if (k <= 0) return;
-    text += k;
-    left -= static_cast<std::size_t>(k);
-  }
-}
 
 void* allocate_or_die(std::size_t bytes) {
   void* p = std::malloc(bytes);
@@ -78,11 +70,16 @@ void die_of(const char* reason) {
 void install_last_resort_handlers() {
   note_this_threads_stack();
   mp_set_memory_functions(allocate_or_die, reallocate_or_die, release);
-  static char alternate_stack[1 << 16];
-  stack_t alternate{};
-  alternate.ss_sp = alternate_stack;
-  alternate.ss_size = sizeof alternate_stack;
-  ::sigaltstack(&alternate, nullptr);
+  // A thread may have its alternate stack already (AddressSanitizer gives each thread one, and unmaps
+  // it when the thread ends): keep that one.
+  stack_t current{};
+  if (::sigaltstack(nullptr, &current) == 0 && (current.ss_flags & SS_DISABLE)) {
+    static char alternate_stack[1 << 16];
+    stack_t alternate{};
+    alternate.ss_sp = alternate_stack;
+    alternate.ss_size = sizeof alternate_stack;
+    ::sigaltstack(&alternate, nullptr);
+  }
   struct sigaction action {};
   action.sa_sigaction = on_segmentation_fault;
   action.sa_flags = SA_SIGINFO | SA_ONSTACK;

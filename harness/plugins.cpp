@@ -1,7 +1,9 @@
 #include "harness/plugins.h"
 
+#include "core/coordinate.h"
 #include "core/json.h"
 #include "core/registry.h"
+#include "harness/write_all.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -126,7 +128,7 @@ class PluginProcess {
   // it cannot be started, exits or crashes before answering.
   std::string exchange(const std::string& request) {
     if (pid_ <= 0) start();
-    if (!write_all(request + "\n")) fail_ended();
+    if (!write_all(to_, request + "\n")) fail_ended();
     std::string line;
     if (!read_line(line)) fail_ended();
     return line;
@@ -190,16 +192,6 @@ class PluginProcess {
       throw std::runtime_error(name_ + ": crashed (signal " + std::to_string(WTERMSIG(status)) + ") before answering");
     throw std::runtime_error(name_ + ": exited with status " + std::to_string(WEXITSTATUS(status)) +
                              " before answering");
-  }
-
-  bool write_all(const std::string& text) {
-    for (std::size_t done = 0; done < text.size();) {
-      const ssize_t k = ::write(to_, text.data() + done, text.size() - done);
-      if (k < 0 && errno == EINTR) continue;
-      if (k <= 0) return false;
-      done += static_cast<std::size_t>(k);
-    }
-    return true;
   }
 
   bool read_line(std::string& line) {
@@ -288,11 +280,11 @@ Decomposition run_plugin(PluginProcess& process, const Polygon& p) {
   try {
     result = parse_json(line);
   } catch (const JsonError& e) {
-    process.fail("printed a line that is not JSON (" + std::string(e.what()) + "): " + line.substr(0, 200));
+    process.fail("printed a line that is not JSON (" + std::string(e.what()) + "): " + quoted_input(line, 200));
   }
-  if (!result.is_object()) process.fail("printed a line that is not a JSON object: " + line.substr(0, 200));
+  if (!result.is_object()) process.fail("printed a line that is not a JSON object: " + quoted_input(line, 200));
   if (const Json* error = result.get("error")) {
-    throw std::runtime_error("refused: " + (error->type == Json::Type::String ? error->text : line.substr(0, 200)));
+    throw std::runtime_error("refused: " + quoted_input(error->type == Json::Type::String ? error->text : line, 200));
   }
   try {
     return decomposition_of(result, p.size());

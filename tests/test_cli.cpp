@@ -172,6 +172,16 @@ TEST_F(Cli, BadPolygonsGetOneErrorLineAndExit3) {
                "/dev/zero holds a NUL byte at offset 0; polygon files are text");
 }
 
+TEST_F(Cli, CheckNamesAPolygonOrItsDefect) {
+  const fs::path cw = file("cw.txt", "0 0\n0 4\n4 4\n4 0\n2 2\n");
+  Result r = cli("check --input " + cw.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "polygon: n=5 reflex=1 orientation=clockwise\n");
+  r = cli("check --json --input " + cw.string());
+  EXPECT_EQ(r.out, "{\"n\": 5, \"reflex\": 1, \"clockwise\": true}\n");
+  expect_error("check --input " + file("bow.txt", "0 0\n2 2\n2 0\n0 2\n").string(), 3, "not simple: edge 0-1 crosses edge 2-3");
+}
+
 TEST_F(Cli, BadUsageExits2) {
   expect_error("run --algorithm nosuch --input x", 2, "unknown algorithm 'nosuch'; 'polydecomp list' names them");
   EXPECT_EQ(cli("run --input x").status, 2);

@@ -144,7 +144,7 @@ TEST_F(Plugins, ARefusalIsThatRunsFailure) {
   add_plugin("refuses", "    print(json.dumps({'error': 'too many vertices'}), flush=True)");
   const Result r = run_on("refuses", "square.txt");
   EXPECT_EQ(r.status, 4);
-  EXPECT_EQ(r.err, "error: refuses failed: refused: too many vertices\n");
+  EXPECT_EQ(r.err, "error: refuses failed: refused: 'too many vertices'\n");
 }
 
 TEST_F(Plugins, AHangIsStoppedByMaxSeconds) {

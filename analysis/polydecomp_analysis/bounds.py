@@ -15,6 +15,10 @@ upper bound on OPT, so ratios are then lower than the true approximation ratios.
 Against the peer: every other triangulation of polydecomp's own is timed against CGAL's constrained
 Delaunay triangulation (cgal-cdt) on the same polygons at n = 10^5 and 10^6, median over the seeds both
 ran. Which algorithms are peers (another library's code) the registry says in its "peer" field.
+
+Beside the peers: every peer (CGAL's, GEOS's, earcut, poly-decomp, ...) against each of polydecomp's own
+algorithms of its kind, per family on the polygons of the largest n at which both have valid runs, with
+each peer's own outcomes (valid, invalid, failed, skipped) counted.
 """
 
 import collections
@@ -288,6 +292,84 @@ def _peer_section(rows, peer=PEER):
     ])
 
 
+def peer_outcomes(runs, registry):
+    """Per peer: [name, library, kind, ok, invalid, failed, skipped, largest n of a valid run]."""
+    rows = []
+    for name in sorted(a for a in registry if is_peer(registry[a])):
+        mine = [run for run in runs if run.algorithm == name]
+        if not mine:
+            continue
+        counts = collections.Counter(run.status for run in mine)
+        largest = max((run.n for run in mine if run.status == "ok"), default="-")
+        rows.append([name, registry[name]["peer"], registry[name]["kind"], counts["ok"], counts["invalid"],
+                     counts["failed"], counts["skipped"], largest])
+    return rows
+
+
+def beside_peer_rows(runs, registry):
+    """Each peer against each of polydecomp's own algorithms of its kind, per family, on the polygons of
+    the largest n at which both have valid runs: [peer, algorithm, family, n, the r range, polygons,
+    the algorithm's median seconds, the peer's, speed-up (the peer's median over the algorithm's)]."""
+    seconds = collections.defaultdict(dict)  # algorithm -> polygon -> seconds of a valid run
+    for run in runs:
+        if run.status == "ok":
+            seconds[run.algorithm][run.polygon] = run.seconds
+    rows = []
+    for peer in sorted(a for a in registry if is_peer(registry[a])):
+        kind = registry[peer]["kind"]
+        for name in sorted(a for a in registry if not is_peer(registry[a]) and registry[a]["kind"] == kind):
+            common = collections.defaultdict(list)  # family -> polygons both ran validly
+            for polygon in seconds[peer].keys() & seconds[name].keys():
+                common[polygon[0]].append(polygon)
+            for family, polygons in sorted(common.items()):
+                n = max(p[1] for p in polygons)
+                at_n = [p for p in polygons if p[1] == n]
+                mine = statistics.median(seconds[name][p] for p in at_n)
+                theirs = statistics.median(seconds[peer][p] for p in at_n)
+                r_low, r_high = min(p[2] for p in at_n), max(p[2] for p in at_n)
+                rows.append([peer, name, family, n, str(r_low) if r_low == r_high else "{}-{}".format(r_low, r_high),
+                             len(at_n), mine, theirs, theirs / mine if mine > 0 else float("inf")])
+    return rows
+
+
+def beside_peer_summary(rows):
+    """Per (peer, algorithm): [peer, algorithm, families, largest common n, lowest speed-up (where),
+    highest speed-up (where)]."""
+    pairs = collections.defaultdict(list)
+    for row in rows:
+        pairs[(row[0], row[1])].append(row)
+    summary = []
+    for (peer, name), mine in sorted(pairs.items()):
+        low, high = min(mine, key=lambda row: row[8]), max(mine, key=lambda row: row[8])
+        summary.append([peer, name, len(mine), max(row[3] for row in mine),
+                        "{:.3g}x ({}, n = {})".format(low[8], low[2], low[3]),
+                        "{:.3g}x ({}, n = {})".format(high[8], high[2], high[3])])
+    return summary
+
+
+def _beside_peers_section(runs, registry):
+    outcomes = peer_outcomes(runs, registry)
+    if not outcomes:
+        return "No peer ran in this sweep."
+    rows = beside_peer_rows(runs, registry)
+    return "\n".join([
+        "Each peer's outcomes in this sweep (a peer keeps its own behaviour: its invalid results are",
+        "recorded as returned), then each peer against polydecomp's own algorithms of its kind, per family",
+        "on the polygons of the largest n at which both returned valid results: medians of the CPU time of",
+        "one call (an external peer's own timing of its algorithm), and the speed-up, the peer's median over",
+        "the algorithm's (above 1 polydecomp's algorithm is faster).",
+        "",
+        _table(["peer", "library", "kind", "ok", "invalid", "failed", "skipped", "largest valid n"], outcomes),
+        "",
+        _table(["peer", "algorithm", "families", "largest common n", "lowest speed-up", "highest speed-up"],
+               beside_peer_summary(rows)) if rows else "No algorithm of polydecomp's own ran beside a peer.",
+        "",
+        _table(["peer", "algorithm", "family", "n", "r", "polygons", "median (s)", "peer median (s)", "speed-up"],
+               [[p, a, f, n, r, k, "{:.4g}".format(m), "{:.4g}".format(t), "{:.3g}".format(x)]
+                for p, a, f, n, r, k, m, t, x in rows]) if rows else "",
+    ])
+
+
 def _table(header, rows):
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     lines += ["| " + " | ".join(str(c).replace("|", "\\|") for c in row) + " |" for row in rows]
@@ -389,6 +471,10 @@ def render(context, registry, times, ops, pieces, runs, source):
         "## Against {}".format(PEER),
         "",
         _peer_section(peer_rows(runs, registry)) if PEER in registry else "{} is not registered.".format(PEER),
+        "",
+        "## Beside the peers",
+        "",
+        _beside_peers_section(runs, registry),
         "",
         "## Invalid and failed runs",
         "",

@@ -124,6 +124,28 @@ class BoundsTest(SyntheticSweep):
         rows = bounds.peer_rows(self.runs, registry, peer="liar", sizes=(1600, 3200))
         self.assertEqual({r[0] for r in rows}, {"tri"})
 
+    def test_each_peer_beside_each_own_algorithm_of_its_kind_at_the_largest_common_n(self):
+        registry = dict(self.registry, opt=dict(self.registry["opt"], peer="Synthetic 1.0"))
+        self.assertEqual(bounds.peer_outcomes(self.runs, registry),
+                         [["opt", "Synthetic 1.0", "convex", 23, 1, 0, 12, 400]])
+        rows = bounds.beside_peer_rows(self.runs, registry)
+        self.assertEqual(sorted({(r[0], r[1]) for r in rows}), [("opt", a) for a in ("approx", "greedy", "nr2")])
+        approx = {r[2]: r for r in rows if r[1] == "approx"}
+        # opt is skipped above n = 400: the comparison is at 400, every r the family has there, both seeds
+        # (random at n = 400: r 0-200 on the vs-r curve, 7 polygons a seed; comb: r = 8).
+        self.assertEqual(approx["random"][3:6], [400, "0-200", 14])
+        self.assertEqual(approx["comb"][3:6], [400, "8", 2])
+        self.assertAlmostEqual(approx["random"][8], 1)  # the same time law and jitter
+        nr2 = {r[2]: r for r in rows if r[1] == "nr2"}
+        self.assertLess(nr2["comb"][8], 1 / 60)  # nr2 takes n r^2 (64 times more at r = 8), opt n
+        summary = bounds.beside_peer_summary(rows)
+        self.assertEqual([s[:4] for s in summary], [["opt", a, 2, 400] for a in ("approx", "greedy", "nr2")])
+        self.assertIn("## Beside the peers", bounds.render({}, registry, [], [], [], self.runs, "x.json"))
+
+    def test_a_sweep_without_peers_says_so(self):
+        self.assertEqual(bounds.peer_outcomes(self.runs, self.registry), [])
+        self.assertIn("No peer ran in this sweep.", self.md)
+
     def test_a_registry_without_peer_fields_is_refused(self):
         with open(self.registry_path, encoding="utf-8") as f:
             entries = json.load(f)
