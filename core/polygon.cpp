@@ -117,6 +117,12 @@ std::size_t Polygon::reflex_count() const {
   return r;
 }
 
+std::size_t Polygon::first_reflex() const {
+  for (std::size_t i = 0; i < v_.size(); ++i)
+    if (is_reflex(i)) return i;
+  return v_.size();
+}
+
 Polygon Polygon::make(std::vector<Point> input) {
   for (std::size_t i = 0; i < input.size(); ++i)
     if (!std::isfinite(input[i].x()) || !std::isfinite(input[i].y()))

@@ -35,6 +35,8 @@ class Polygon {
   // Interior angle strictly greater than 180 degrees (a notch). Collinear vertices are not reflex.
   bool is_reflex(std::size_t i) const { return orient(v_[prev(i)], v_[i], v_[next(i)]) < 0; }
   std::size_t reflex_count() const;
+  // The lowest-numbered reflex vertex, or size() when the polygon is convex.
+  std::size_t first_reflex() const;
 
   // Index in the input file of counter-clockwise vertex i. Vertex 0 is always input vertex 0; when the
   // input was clockwise the rest run backwards.

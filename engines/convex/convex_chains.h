@@ -73,9 +73,7 @@ class Program {
   // ---- set-up ----
 
   bool renumber() {
-    rot_ = n_;
-    for (std::size_t v = 0; v < n_ && rot_ == n_; ++v)
-      if (p_.is_reflex(v)) rot_ = v;
+    rot_ = p_.first_reflex();
     if (rot_ == n_) return false;
     reflex_.assign(n_, 0);
     for (std::uint32_t x = 0; x < n_; ++x) reflex_[x] = turn(prev_of(x), x, next_of(x)) < 0;

@@ -117,9 +117,7 @@ class Program {
 
   // Vertex 0 of the program is a reflex vertex of p (Sec. 3.2); false when p has none (p is convex).
   bool renumber() {
-    rot_ = n_;
-    for (std::size_t v = 0; v < n_ && rot_ == n_; ++v)
-      if (p_.is_reflex(v)) rot_ = v;
+    rot_ = p_.first_reflex();
     if (rot_ == n_) return false;
     reflex_.assign(n_, 0);
     special_.assign(n_, 0);
