@@ -347,12 +347,24 @@ def beside_peer_summary(rows):
     return summary
 
 
-def _beside_peers_section(runs, registry):
+def _machines_caveat(context):
+    """A warning when the results were measured on more than one machine: a ratio of two keys' times
+    is then only as good as the two machines are alike."""
+    machines = sorted(set(context.get("cpu", "").split(" | ")))
+    if len(machines) < 2:
+        return []
+    return ["These results were measured on more than one machine ({}): a speed-up between keys measured".format(
+                ", ".join(machines)),
+            "on different machines is only indicative (results/README.md says which keys were measured where).",
+            ""]
+
+
+def _beside_peers_section(runs, registry, context):
     outcomes = peer_outcomes(runs, registry)
     if not outcomes:
         return "No peer ran in this sweep."
     rows = beside_peer_rows(runs, registry)
-    return "\n".join([
+    return "\n".join(_machines_caveat(context) + [
         "Each peer's outcomes in this sweep (a peer keeps its own behaviour: its invalid results are",
         "recorded as returned), then each peer against polydecomp's own algorithms of its kind, per family",
         "on the polygons of the largest n at which both returned valid results: medians of the CPU time of",
@@ -474,7 +486,7 @@ def render(context, registry, times, ops, pieces, runs, source):
         "",
         "## Beside the peers",
         "",
-        _beside_peers_section(runs, registry),
+        _beside_peers_section(runs, registry, context),
         "",
         "## Invalid and failed runs",
         "",

@@ -141,6 +141,9 @@ class BoundsTest(SyntheticSweep):
         summary = bounds.beside_peer_summary(rows)
         self.assertEqual([s[:4] for s in summary], [["opt", a, 2, 400] for a in ("approx", "greedy", "nr2")])
         self.assertIn("## Beside the peers", bounds.render({}, registry, [], [], [], self.runs, "x.json"))
+        self.assertNotIn("more than one machine", bounds.render({"cpu": "A"}, registry, [], [], [], self.runs, "x"))
+        mixed = bounds.render({"cpu": "B | A | B"}, registry, [], [], [], self.runs, "x")
+        self.assertIn("These results were measured on more than one machine (A, B)", mixed)
 
     def test_a_sweep_without_peers_says_so(self):
         self.assertEqual(bounds.peer_outcomes(self.runs, self.registry), [])
