@@ -3,7 +3,6 @@
 #include <charconv>
 #include <cmath>
 #include <sstream>
-#include <string_view>
 
 namespace pd {
 
@@ -14,12 +13,9 @@ bool is_double(const Rational& v) {
 
 std::string double_text(double d) {
   char buf[64];
-  auto res = std::to_chars(buf, buf + sizeof buf, d);
-  // From 2^53 up, the shortest text may be an integer that is not the double's exact value (2^60
-  // prints as 1152921504606847000, not ...976); an integer is read as exact (core/coordinate.h), so
-  // such values are written with an exponent.
-  if (std::fabs(d) >= 9007199254740992.0 && std::string_view(buf, res.ptr - buf).find_first_of(".e") == std::string_view::npos)
-    res = std::to_chars(buf, buf + sizeof buf, d, std::chars_format::scientific);
+  // When the shortest text is an integer it is the exact value (to_chars breaks ties between texts of
+  // one length by the smallest difference), so it reads back under core/coordinate.h's rule.
+  const auto res = std::to_chars(buf, buf + sizeof buf, d);
   return std::string(buf, res.ptr);
 }
 

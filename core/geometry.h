@@ -35,8 +35,7 @@ inline int orient(const QPoint& p, const QPoint& q, const QPoint& r) {
 std::string rational_text(const Rational& v);
 // True when v is exactly a double (then JSON may carry it as a number).
 bool is_double(const Rational& v);
-// Shortest decimal text that parses back to exactly d (with an exponent from 2^53 up, so that no
-// integer text is written that is not the exact value).
+// Shortest decimal text that parses back to exactly d.
 std::string double_text(double d);
 
 }  // namespace pd

@@ -5,10 +5,10 @@
 #include "core/json.h"
 
 #include "core/coordinate.h"
+#include "core/geometry.h"
 
 #include <nlohmann/json.hpp>
 
-#include <charconv>
 #include <cmath>
 
 namespace pd {
@@ -130,15 +130,11 @@ class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
     for (std::size_t row = 0; row < array.packed.size(); row += array.width) {
       Json position;
       position.type = Json::Type::Array;
-      for (std::size_t k = 0; k < array.width; ++k) position.items.push_back(number(shortest_text(array.packed[row + k])));
+      for (std::size_t k = 0; k < array.width; ++k) position.items.push_back(number(double_text(array.packed[row + k])));
       array.items.push_back(std::move(position));
     }
     array.packed.clear();
     array.width = 0;
-  }
-  static std::string shortest_text(double d) {
-    char buffer[32];
-    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, d).ptr);
   }
 
   std::vector<Json> open_;

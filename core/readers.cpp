@@ -8,9 +8,11 @@
 
 #include <sys/stat.h>
 
+#include <cctype>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <iostream>
+#include <memory>
 #include <string_view>
 
 namespace pd {
@@ -110,8 +112,9 @@ class WktReader {
     const std::string tag = upper(word());
     if (tag != "POLYGON" && tag != "MULTIPOLYGON") bad("WKT: " + quoted_input(tag) + " is not POLYGON or MULTIPOLYGON");
     std::vector<Rings> parts;
-    if (peek_word() == "Z" || peek_word() == "M" || peek_word() == "ZM") bad("WKT with Z or M coordinates is not supported");
-    if (peek_word() == "EMPTY") {
+    const std::string next = peek_word();
+    if (next == "Z" || next == "M" || next == "ZM") bad("WKT with Z or M coordinates is not supported");
+    if (next == "EMPTY") {
       word();
     } else if (tag == "POLYGON") {
       parts.push_back(polygon_text());
@@ -178,9 +181,8 @@ class WktReader {
     while (at_ < text_.size() && is_space(text_[at_])) ++at_;
   }
   [[noreturn]] void fail(const std::string& what) {
-    const std::string_view found = at_ < text_.size() ? text_.substr(at_, 20) : std::string_view("the end");
-    bad("WKT: " + what + " at offset " + std::to_string(at_) + ", found " +
-        (at_ < text_.size() ? quoted_input(found, 20) : std::string("the end")));
+    const std::string found = at_ < text_.size() ? quoted_input(text_.substr(at_, 20), 20) : "the end";
+    bad("WKT: " + what + " at offset " + std::to_string(at_) + ", found " + found);
   }
   static std::string upper(std::string s) {
     for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -329,17 +331,9 @@ std::vector<Point> read_polygon_file(const std::string& path) {
   struct stat info;
   if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
     bad(path + " is a directory; --input takes one polygon file");
-  std::FILE* in = std::fopen(path.c_str(), "rb");
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(path.c_str(), "rb"), std::fclose);
   if (!in) bad("cannot read " + path + ": " + std::strerror(errno));
-  std::string text;
-  try {
-    text = read_text(in, path);
-  } catch (...) {
-    std::fclose(in);
-    throw;
-  }
-  std::fclose(in);
-  return parse_polygon(text);
+  return parse_polygon(read_text(in.get(), path));
 }
 
 }  // namespace pd

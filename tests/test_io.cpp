@@ -99,6 +99,13 @@ TEST(Readers, NumbersThatAreExactlyDoublesAreRead) {
   EXPECT_EQ(parse_polygon("POLYGON ((0 1.5e3, 1 0, 0 1, 0 1.5e3))")[0].y(), 1500.0);
 }
 
+// A ring that stops being packable (here a 3-D position after 2-D ones) is unpacked into numbers whose
+// text reads back as the same doubles, 2^60 included: the refusal names the real defect.
+TEST(Readers, UnpackedPositionsKeepTheirValues) {
+  EXPECT_EQ(error_of("[[1152921504606846976,0],[1,0],[0,1,5]]"),
+            "GeoJSON: positions with more than 2 coordinates are not supported");
+}
+
 TEST(Readers, Wkt) {
   EXPECT_EQ(parse_polygon("POLYGON ((0 0, 4 0, 0 3, 0 0))").size(), 4u);
   EXPECT_EQ(parse_polygon("polygon((0 0,4 0,0 3))"), kTriangle);
