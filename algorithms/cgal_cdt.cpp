@@ -2,8 +2,9 @@
 //
 // CGAL 5.5, Triangulation_2: Constrained_Delaunay_triangulation_2 with the polygon's edges as
 // constraints, O(n log n) expected; the inside faces are found by a flood fill from the infinite face
-// that flips parity at each constraint. Pre: a simple counter-clockwise polygon (collinear vertices are
-// fine). The triangles are reported as CGAL returns them.
+// that flips parity at each constraint, so a hole's faces (two constraints crossed) are outside. Pre: a
+// polygon, with holes or without (collinear vertices are fine): n + 2h - 2 triangles for h holes. The
+// triangles are reported as CGAL returns them.
 #include "core/registry.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -70,6 +71,6 @@ Decomposition cgal_cdt(const Polygon& p, Counters& counters) {
 REGISTER_ALGORITHM({.name = "cgal-cdt", .kind = Kind::Triangulation, .time_bound = "n*log(n)",
                     .pieces_bound = "== n-2",
                     .source = "CGAL 5.5 Constrained_Delaunay_triangulation_2, inside faces",
-                    .peer = "CGAL 5.5", .run = cgal_cdt});
+                    .peer = "CGAL 5.5", .accepts = {.holes = true}, .run = cgal_cdt});
 
 }  // namespace pd

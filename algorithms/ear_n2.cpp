@@ -1,8 +1,11 @@
 // ear-n2: triangulation by ear clipping with ear-status updates (Rosen, "Polygon Partitioning",
-// lecture slides 003, "Ear based idea" with "Update the ear tip status of v1 and v3").
+// lecture slides 003, "Ear based idea" with "Update the ear tip status of v1 and v3"); holes joined
+// first by Eberly's bridges ("Triangulation by Ear Clipping", 2008, Sec. 4-5;
+// engines/triangulation/hole_bridges.h).
 //
-// Time O(n^2), space O(n). Pre: a simple counter-clockwise polygon; collinear (180-degree) vertices are
-// allowed. Output: n-3 diagonals, n-2 non-degenerate triangles, no Steiner points.
+// Time O(n^2) (with h holes: O(n h) for the bridges, then O((n + 2h)^2)), space O(n). Pre: a polygon,
+// with h >= 0 holes; collinear (180-degree) vertices are allowed. Output: n + 3h - 3 diagonals (the h
+// bridges among them), n + 2h - 2 non-degenerate triangles, no Steiner points.
 //
 // Each vertex keeps its ear status. Clipping the ear at b changes only the status of its neighbours a
 // and c, so only they are tested again (O(n) each: against the remaining non-convex vertices). Locating
@@ -10,10 +13,14 @@
 // non-convex vertices only is enough: when a closed ear triangle holds a vertex, the one farthest from
 // line ac is not strictly convex. A vertex is an ear tip only when strictly convex, so collinear
 // vertices are never clipped into a degenerate triangle; every simple polygon, collinear vertices and
-// all, has such an ear (a leaf of the dual tree of any triangulation).
+// all, has such an ear (a leaf of the dual tree of any triangulation). With holes the cycle visits each
+// bridge end twice: the other visits of a, b and c are not tested as points (they sit on the corners)
+// but by their edges, none of which may leave that corner into the triangle or along the new diagonal.
 #include "core/registry.h"
+#include "engines/triangulation/hole_bridges.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <vector>
 
 namespace pd {
@@ -21,21 +28,24 @@ namespace {
 
 class EarClipper {
  public:
-  explicit EarClipper(const Polygon& p)
-      : p_(p), n_(p.size()), prev_(n_), next_(n_), ear_(n_, 0), removed_(n_, 0) {
-    for (std::size_t i = 0; i < n_; ++i) prev_[i] = p.prev(i), next_[i] = p.next(i);
+  EarClipper(const Polygon& p, BridgedCycle cycle)
+      : p_(p), c_(std::move(cycle)), nodes_(c_.vertex.size()), ear_(nodes_, 0), removed_(nodes_, 0),
+        visits_(p.size()) {
+    for (std::uint32_t k = 0; k < nodes_; ++k) visits_[c_.vertex[k]].push_back(k);
   }
 
   Decomposition run(Counters& counters) {
     Decomposition d;
-    d.cuts.reserve(n_ - 3);
+    d.cuts.reserve(nodes_ - 3 + c_.bridges.size());
+    d.cuts = c_.bridges;
     refresh_non_convex();
-    for (std::size_t i = 0; i < n_; ++i) ear_[i] = is_ear(i);
+    for (std::size_t i = 0; i < nodes_; ++i) ear_[i] = is_ear(i);
     std::size_t v = 0;
-    for (std::size_t remaining = n_; remaining > 3; --remaining) {
-      while (!ear_[v]) v = next_[v], ++walk_steps_;
-      const std::size_t a = prev_[v], c = next_[v];
-      d.add_cut(a, c);
+    for (std::size_t remaining = nodes_; remaining > 3; --remaining) {
+      for (std::size_t walked = 0; !ear_[v]; v = c_.next[v], ++walk_steps_)
+        if (++walked > remaining) throw std::logic_error("no ear left among " + std::to_string(remaining) + " vertices");
+      const std::size_t a = c_.prev[v], c = c_.next[v];
+      d.add_cut(c_.vertex[a], c_.vertex[c]);
       unlink(v);
       ear_[a] = is_ear(a);
       ear_[c] = is_ear(c);
@@ -48,19 +58,20 @@ class EarClipper {
   }
 
  private:
-  int turn(std::size_t v) const { return orient(p_[prev_[v]], p_[v], p_[next_[v]]); }
+  const Point& at(std::size_t node) const { return p_[c_.vertex[node]]; }
+  int turn(std::size_t v) const { return orient(at(c_.prev[v]), at(v), at(c_.next[v])); }
 
   void refresh_non_convex() {
     non_convex_.clear();
-    for (std::size_t i = 0; i < n_; ++i)
+    for (std::size_t i = 0; i < nodes_; ++i)
       if (turn(i) <= 0) non_convex_.push_back(i);
   }
 
   // Clipping can only make a neighbour more convex, so the non-convex list only shrinks.
   void unlink(std::size_t v) {
-    const std::size_t a = prev_[v], c = next_[v];
-    next_[a] = c;
-    prev_[c] = a;
+    const std::size_t a = c_.prev[v], c = c_.next[v];
+    c_.next[a] = static_cast<std::uint32_t>(c);
+    c_.prev[c] = static_cast<std::uint32_t>(a);
     removed_[v] = 1;
     non_convex_.erase(std::remove_if(non_convex_.begin(), non_convex_.end(),
                                      [&](std::size_t u) { return removed_[u] || ((u == a || u == c) && turn(u) > 0); }),
@@ -69,31 +80,58 @@ class EarClipper {
 
   bool is_ear(std::size_t b) {
     ++ear_tests_;
-    const std::size_t a = prev_[b], c = next_[b];
-    if (orient(p_[a], p_[b], p_[c]) <= 0) return false;
+    const std::size_t a = c_.prev[b], c = c_.next[b];
+    const VertexId va = c_.vertex[a], vb = c_.vertex[b], vc = c_.vertex[c];
+    if (va == vc || orient(at(a), at(b), at(c)) <= 0) return false;
     for (std::size_t v : non_convex_) {
-      if (v == a || v == b || v == c) continue;
+      const VertexId w = c_.vertex[v];
+      if (w == va || w == vb || w == vc) continue;
       ++point_tests_;
-      if (orient(p_[a], p_[b], p_[v]) >= 0 && orient(p_[b], p_[c], p_[v]) >= 0 && orient(p_[c], p_[a], p_[v]) >= 0)
+      if (orient(at(a), at(b), at(v)) >= 0 && orient(at(b), at(c), at(v)) >= 0 && orient(at(c), at(a), at(v)) >= 0)
         return false;
     }
-    return true;
+    return !other_visit_enters(a, at(b), at(c), &at(c)) && !other_visit_enters(b, at(c), at(a), nullptr) &&
+           !other_visit_enters(c, at(a), at(b), &at(a));
+  }
+
+  // Whether another visit of corner `node`'s vertex has an edge leaving the corner into the triangle
+  // (strictly between the rays to `first` and `second`, counter-clockwise) or along the new diagonal
+  // (the ray to `diagonal`). Along a triangle side that is a boundary edge is fine: that is a bridge,
+  // walked the other way on its other side.
+  bool other_visit_enters(std::size_t node, const Point& first, const Point& second, const Point* diagonal) const {
+    const std::vector<std::uint32_t>& visits = visits_[c_.vertex[node]];
+    if (visits.size() == 1) return false;
+    const Point& corner = at(node);
+    for (const std::uint32_t other : visits) {
+      if (other == node || removed_[other]) continue;
+      for (const std::uint32_t end : {c_.prev[other], c_.next[other]}) {
+        const Point& q = at(end);
+        if (orient(corner, first, q) > 0 && orient(corner, second, q) < 0) return true;
+        if (diagonal && orient(corner, *diagonal, q) == 0 && CGAL::angle(*diagonal, corner, q) == CGAL::ACUTE) return true;
+      }
+    }
+    return false;
   }
 
   const Polygon& p_;
-  std::size_t n_;
-  std::vector<std::size_t> prev_, next_, non_convex_;
+  BridgedCycle c_;
+  std::size_t nodes_;
+  std::vector<std::size_t> non_convex_;
   std::vector<char> ear_, removed_;
+  std::vector<std::vector<std::uint32_t>> visits_;  // each vertex's nodes
   std::int64_t ear_tests_ = 0, point_tests_ = 0, walk_steps_ = 0;
 };
 
-Decomposition ear_n2(const Polygon& p, Counters& counters) { return EarClipper(p).run(counters); }
+Decomposition ear_n2(const Polygon& p, Counters& counters) {
+  BridgedCycle cycle = bridge_holes(p, counters);
+  return EarClipper(p, std::move(cycle)).run(counters);
+}
 
 }  // namespace
 
 REGISTER_ALGORITHM({.name = "ear-n2", .kind = Kind::Triangulation, .time_bound = "n^2",
                     .pieces_bound = "== n-2",
-                    .source = "Rosen slides (003), ear clipping with ear-status updates",
-                    .size_ceiling = 20000, .run = ear_n2});
+                    .source = "Rosen slides (003), ear clipping with ear-status updates; Eberly 2008 bridges for holes",
+                    .accepts = {.holes = true}, .size_ceiling = 20000, .run = ear_n2});
 
 }  // namespace pd

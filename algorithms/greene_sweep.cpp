@@ -3,9 +3,10 @@
 // starts with y-monotone partition". The slides give only that outline, and Greene's own rules for a
 // monotone piece are not among our sources.
 //
-// Time O(n log n) (the partition's sweep; the rest is O(n)), space O(n). Pre: a simple
-// counter-clockwise polygon; collinear vertices allowed. Output: diagonals only, no Steiner points, at
-// most 2r + 1 pieces, at most 4 OPT (the bound Greene's approximation is known for).
+// Time O(n log n) (the partition's sweep; the rest is O(n), or O(n log n) with holes), space O(n). Pre:
+// a polygon, with h >= 0 holes (the partition takes them, monotone.h); collinear vertices allowed.
+// Output: diagonals only, no Steiner points, at most 2r + 1 - h pieces, at most 4 OPT without holes
+// (the bound Greene's approximation is known for).
 //
 // Reconstruction: (1) the y-monotone partition by plane sweep (y_monotone_diagonals, monotone.h);
 // (2) each monotone piece swept top to bottom by the linear stack procedure of the slides (Garey,
@@ -45,6 +46,6 @@ Decomposition greene_sweep(const Polygon& p, Counters& counters) {
 REGISTER_ALGORITHM({.name = "greene-sweep", .kind = Kind::Convex, .time_bound = "n*log(n)",
                     .pieces_bound = "<= 4*OPT",
                     .source = "Greene 1983 as outlined in Rosen slides (003): y-monotone partition, then each piece; per-piece step reconstructed",
-                    .run = greene_sweep});
+                    .accepts = {.holes = true}, .run = greene_sweep});
 
 }  // namespace pd

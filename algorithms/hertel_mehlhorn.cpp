@@ -5,10 +5,11 @@
 // "Hertel-Mehlhorn's algorithm ... O(n) time with the use of appropriate data structures").
 //
 // Time O(n) after the triangulation, O(n log n) with it (the `monotone` triangulation,
-// triangulate_monotone in monotone.h); space O(n). Pre: a simple counter-clockwise polygon; collinear
-// vertices allowed. Output: diagonals only, no Steiner points; every diagonal left is essential, so at
-// most 2r + 1 pieces, at most 4 OPT. The O(n) removal, with its half-edge lists built by counting
-// sorts, is in engines/convex/essential_diagonals.h.
+// triangulate_monotone in monotone.h); space O(n). Pre: a polygon, with h >= 0 holes (then each
+// vertex's diagonals are sorted by angle: O(n log n) after the triangulation); collinear vertices
+// allowed. Output: diagonals only, no Steiner points; every diagonal left is essential, so at most
+// 2r + 1 - h pieces, at most 4 OPT without holes. The O(n) removal, with its half-edge lists built by
+// counting sorts, is in engines/convex/essential_diagonals.h.
 #include "core/registry.h"
 #include "engines/convex/essential_diagonals.h"
 #include "engines/triangulation/monotone.h"
@@ -34,6 +35,6 @@ Decomposition hertel_mehlhorn(const Polygon& p, Counters& counters) {
 REGISTER_ALGORITHM({.name = "hertel-mehlhorn", .kind = Kind::Convex, .time_bound = "n*log(n)",
                     .pieces_bound = "<= 4*OPT",
                     .source = "Hertel-Mehlhorn via Keil-Snoeyink (001) Sec. 2 and slides (003); O(n) after the monotone triangulation",
-                    .run = hertel_mehlhorn});
+                    .accepts = {.holes = true}, .run = hertel_mehlhorn});
 
 }  // namespace pd

@@ -2,9 +2,11 @@
 // Computational Geometry, Sec. 3.2, MakeMonotone; Rosen slides 003, "Partitioning into monotone
 // polygons", "Sweep idea", "Forming trapezoids").
 //
-// Time O(n log n), space O(n). Pre: a simple counter-clockwise polygon; collinear (180-degree) vertices
-// and horizontal edges allowed. Output: diagonals only, one from every split vertex up and one from
-// every merge vertex down (one diagonal may serve both ends), so at most r+1 pieces, each weakly
+// Time O(n log n), space O(n). Pre: a polygon, with h >= 0 holes (a hole's top vertex is a split
+// vertex, its bottom a merge vertex, as de Berg et al. note in Sec. 3.2); collinear (180-degree)
+// vertices and horizontal edges allowed. Output: diagonals only, one from every split vertex up and one
+// from every merge vertex down (one diagonal may serve both ends), so at most r+1-h pieces (each of the
+// first h diagonals that reach a hole joins two rings instead of splitting a piece), each weakly
 // y-monotone. No Steiner points.
 #include "core/registry.h"
 #include "engines/triangulation/monotone.h"
@@ -23,6 +25,6 @@ Decomposition y_monotone(const Polygon& p, Counters& counters) {
 REGISTER_ALGORITHM({.name = "y-monotone", .kind = Kind::Partition, .time_bound = "n*log(n)",
                     .pieces_bound = "<= r+1",
                     .source = "de Berg et al. Sec. 3.2 (MakeMonotone); Rosen slides (003), monotone partitioning",
-                    .run = y_monotone});
+                    .accepts = {.holes = true}, .run = y_monotone});
 
 }  // namespace pd

@@ -36,10 +36,11 @@ namespace {
 
 [[noreturn]] void malformed(const std::string& why) { throw std::invalid_argument(why); }
 
-// The boundary as a cycle of vertex ids, with each Steiner point placed inside the edge it names,
-// ordered along that edge.
-std::vector<VertexId> boundary_cycle(const Polygon& p, const Decomposition& d,
-                                     const std::vector<QPoint>& pts) {
+// The boundary as one cycle of vertex ids per ring, with each Steiner point placed inside the edge it
+// names, ordered along that edge.
+using Cycles = std::vector<std::vector<VertexId>>;
+
+Cycles boundary_cycles(const Polygon& p, const Decomposition& d, const std::vector<QPoint>* pts) {
   const std::size_t n = p.size();
   std::map<std::size_t, std::vector<VertexId>> on_edge;
   for (std::size_t k = 0; k < d.steiner.size(); ++k) {
@@ -48,25 +49,28 @@ std::vector<VertexId> boundary_cycle(const Polygon& p, const Decomposition& d,
     if (e < 0 || static_cast<std::size_t>(e) >= n)
       malformed("Steiner point " + std::to_string(n + k) + " names boundary edge " + std::to_string(e) +
                 ", which does not exist");
-    const QPoint &a = pts[e], &b = pts[p.next(e)], &s = pts[n + k];
+    const QPoint &a = (*pts)[e], &b = (*pts)[p.next(e)], &s = (*pts)[n + k];
     if (orient(a, b, s) != 0 || !CGAL::collinear_are_strictly_ordered_along_line(a, s, b))
       malformed("Steiner point " + std::to_string(n + k) + " is not inside boundary edge " +
                 std::to_string(e) + "-" + std::to_string(p.next(e)));
     on_edge[e].push_back(static_cast<VertexId>(n + k));
   }
-  std::vector<VertexId> cycle;
-  cycle.reserve(n + d.steiner.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    cycle.push_back(static_cast<VertexId>(i));
-    auto it = on_edge.find(i);
-    if (it == on_edge.end()) continue;
-    const QPoint& a = pts[i];
-    std::sort(it->second.begin(), it->second.end(), [&](VertexId s, VertexId t) {
-      return CGAL::squared_distance(a, pts[s]) < CGAL::squared_distance(a, pts[t]);
-    });
-    cycle.insert(cycle.end(), it->second.begin(), it->second.end());
+  Cycles cycles(p.ring_count());
+  for (std::size_t r = 0; r < p.ring_count(); ++r) {
+    std::vector<VertexId>& cycle = cycles[r];
+    cycle.reserve(p.ring_end(r) - p.ring_begin(r));
+    for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i) {
+      cycle.push_back(static_cast<VertexId>(i));
+      auto it = on_edge.find(i);
+      if (it == on_edge.end()) continue;
+      const QPoint& a = (*pts)[i];
+      std::sort(it->second.begin(), it->second.end(), [&](VertexId s, VertexId t) {
+        return CGAL::squared_distance(a, (*pts)[s]) < CGAL::squared_distance(a, (*pts)[t]);
+      });
+      cycle.insert(cycle.end(), it->second.begin(), it->second.end());
+    }
   }
-  return cycle;
+  return cycles;
 }
 
 struct HalfEdge {
@@ -150,10 +154,10 @@ Rotation sorted_rotation(const std::vector<P>& pts, const std::vector<HalfEdge>&
   return rot;
 }
 
-// The faces of the plane graph, except the one to the left of outer_from->outer_to (the outside).
+// The faces of the plane graph, except those to the left of a ring's first edge walked backwards (the
+// outside, and the inside of each hole).
 template <class P>
-std::vector<Piece> bounded_faces(const std::vector<P>& pts, const std::vector<HalfEdge>& edges,
-                                 VertexId outer_from, VertexId outer_to) {
+std::vector<Piece> bounded_faces(const std::vector<P>& pts, const std::vector<HalfEdge>& edges, const Cycles& rings) {
   const Rotation rot = sorted_rotation(pts, edges);
   std::vector<char> used(edges.size(), 0);
   std::vector<Piece> faces;
@@ -165,26 +169,28 @@ std::vector<Piece> bounded_faces(const std::vector<P>& pts, const std::vector<Ha
     }
     return face;
   };
-  for (std::size_t h = rot.start[outer_from]; h < rot.start[outer_from + 1]; ++h)
-    if (rot.target[h] == outer_to) walk(h);
+  for (const std::vector<VertexId>& ring : rings)
+    for (std::size_t h = rot.start[ring[1]]; h < rot.start[ring[1] + 1]; ++h)
+      if (rot.target[h] == ring[0] && !used[h]) walk(h);
   for (std::size_t s = 0; s < edges.size(); ++s)
     if (!used[s]) faces.push_back(walk(s));
   return faces;
 }
 
-std::vector<HalfEdge> half_edges(const Decomposition& d, const std::vector<VertexId>& boundary,
-                                 std::size_t m) {
+std::vector<HalfEdge> half_edges(const Decomposition& d, const Cycles& rings, std::size_t m) {
   std::vector<HalfEdge> edges;
-  edges.reserve(2 * (boundary.size() + d.cuts.size()));
+  std::vector<std::pair<VertexId, VertexId>> seen;
+  edges.reserve(2 * (m + d.cuts.size()));
+  seen.reserve(m + d.cuts.size());
   auto add = [&](VertexId a, VertexId b) {
     edges.push_back({a, b});
     edges.push_back({b, a});
   };
-  for (std::size_t i = 0; i < boundary.size(); ++i) add(boundary[i], boundary[(i + 1) % boundary.size()]);
-  std::vector<std::pair<VertexId, VertexId>> seen;
-  seen.reserve(boundary.size() + d.cuts.size());
-  for (std::size_t i = 0; i < boundary.size(); ++i)
-    seen.push_back(std::minmax(boundary[i], boundary[(i + 1) % boundary.size()]));
+  for (const std::vector<VertexId>& ring : rings)
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      add(ring[i], ring[(i + 1) % ring.size()]);
+      seen.push_back(std::minmax(ring[i], ring[(i + 1) % ring.size()]));
+    }
   for (std::size_t c = 0; c < d.cuts.size(); ++c) {
     const Cut& cut = d.cuts[c];
     if (cut.a >= m || cut.b >= m)
@@ -206,13 +212,12 @@ std::vector<Piece> pieces_of(const Polygon& p, const Decomposition& d) {
   if (d.pieces) return *d.pieces;
   const std::size_t m = p.size() + d.steiner.size();
   if (d.steiner.empty()) {
-    std::vector<VertexId> boundary(p.size());
-    std::iota(boundary.begin(), boundary.end(), 0);
-    return bounded_faces(p.vertices(), half_edges(d, boundary, m), boundary[1], boundary[0]);
+    const Cycles rings = boundary_cycles(p, d, nullptr);
+    return bounded_faces(p.vertices(), half_edges(d, rings, m), rings);
   }
   const std::vector<QPoint> pts = exact_points(p, d);
-  const std::vector<VertexId> boundary = boundary_cycle(p, d, pts);
-  return bounded_faces(pts, half_edges(d, boundary, m), boundary[1], boundary[0]);
+  const Cycles rings = boundary_cycles(p, d, &pts);
+  return bounded_faces(pts, half_edges(d, rings, m), rings);
 }
 
 }  // namespace pd

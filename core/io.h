@@ -1,11 +1,11 @@
 // Reading polygons and writing results.
 //
 // Input formats are detected from the content (readers.cpp): plain text (`x y` per line, `#` comments,
-// an optional single-number count line), WKT `POLYGON` or a one-part `MULTIPOLYGON`, GeoJSON `Polygon`,
-// a one-part `MultiPolygon`, a `Feature` holding one, a `FeatureCollection` of one such feature, and
-// earcut's bare array of rings; a UTF-8 byte order mark is skipped. Every coordinate is read by
-// core/coordinate.h's rule. A reader returns the outer ring as written; Polygon::make does the
-// geometric checks. Writers are in io.cpp.
+// an optional single-number count line; one ring), WKT or EWKT `POLYGON` and `MULTIPOLYGON` (Z and M
+// values dropped), GeoJSON `Polygon`, `MultiPolygon`, a `Feature` holding one, a `FeatureCollection` of
+// one such feature, and earcut's bare array of rings; a UTF-8 byte order mark is skipped. Every
+// coordinate is read by core/coordinate.h's rule. A reader returns every part's rings as written;
+// make_parts (core/polygon.h) does the geometric checks. Writers are in io.cpp.
 #pragma once
 
 #include "core/decomposition.h"
@@ -18,33 +18,41 @@
 
 namespace pd {
 
-// Parses polygon text in any supported format. Throws PolygonError naming the problem (garbage, a
-// number that is not a coordinate, an empty ring, holes, a multipolygon).
-std::vector<Point> parse_polygon(const std::string& content);
+// Parses polygon text in any supported format into its parts (one for a polygon), each its outer ring
+// then its holes. Throws PolygonError naming the problem (garbage, a number that is not a coordinate,
+// an empty polygon).
+std::vector<Rings> parse_parts(const std::string& content);
 // Reads and parses a file ("-": the standard input); an unreadable file, a directory and a file holding
 // a NUL byte (binary data, /dev/zero) are PolygonErrors too.
-std::vector<Point> read_polygon_file(const std::string& path);
+std::vector<Rings> read_parts_file(const std::string& path);
 
 enum class Format { Txt, Wkt, GeoJson };
 Format parse_format(const std::string& name);  // throws std::invalid_argument
-std::string format_polygon(const std::vector<Point>& ring, Format f);
+// The rings (the outer ring, then its holes) in format f, each ring closed where the format wants it.
+// Throws std::invalid_argument for holes in plain text, which holds one ring.
+std::string format_polygon(const Rings& rings, Format f);
+
+// One part's result: its polygon, what the algorithm returned and the pieces in Polygon ids.
+struct PartResult {
+  const Polygon* polygon;
+  const Decomposition* decomposition;
+  const std::vector<Piece>* pieces;
+};
 
 struct RunReport {
   std::string algorithm;
-  const Polygon* polygon;
-  const Decomposition* decomposition;
-  const std::vector<Piece>* pieces;  // in Polygon (counter-clockwise) ids
-  std::optional<bool> valid;         // absent with --no-validate
+  std::vector<PartResult> parts;  // one for a polygon; a multipolygon's parts in file order
+  std::optional<bool> valid;      // absent with --no-validate
   double seconds;
   const Counters* counters;
 };
 
-// The `run --json` object of docs/CONTRACT.md: points in file order then Steiner points (exact), pieces
-// as counter-clockwise cycles of indices into points.
+// The `run --json` object of docs/CONTRACT.md: points in file order (every part's input vertices, then
+// every part's Steiner points, exact), pieces as counter-clockwise cycles of indices into points,
+// "holes", "merged" when input vertices were merged, "parts" for more than one part.
 std::string run_json(const RunReport& r);
 
 // An SVG figure: the polygon, each piece in its own colour, reflex vertices and Steiner points marked.
-std::string run_svg(const Polygon& p, const Decomposition& d, const std::vector<Piece>& pieces,
-                    const std::string& title);
+std::string run_svg(const std::vector<PartResult>& parts, const std::string& title);
 
 }  // namespace pd

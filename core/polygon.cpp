@@ -1,17 +1,26 @@
 #include "core/polygon.h"
 
+#include "core/ring_layout.h"
+
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <string>
 
 namespace pd {
 namespace {
 
-std::string edge_name(std::size_t i, std::size_t n) {
-  return std::to_string(i) + "-" + std::to_string((i + 1) % n);
+// Names a vertex of a cycle being checked: its index in the input (the cycle may have lost merged
+// vertices).
+using NameOf = std::function<std::string(std::size_t)>;
+
+std::string identity_name(std::size_t i) { return std::to_string(i); }
+
+std::string edge_name(std::size_t i, std::size_t n, const NameOf& name) {
+  return name(i) + "-" + name((i + 1) % n);
 }
 
 template <class P>
@@ -34,7 +43,7 @@ bool folds_back(const P& a, const P& b, const P& c) {
 }
 
 template <class P>
-std::string duplicate_vertices(const std::vector<P>& cycle) {
+std::string duplicate_vertices(const std::vector<P>& cycle, const NameOf& name) {
   std::vector<std::size_t> order(cycle.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
@@ -42,19 +51,18 @@ std::string duplicate_vertices(const std::vector<P>& cycle) {
   });
   for (std::size_t k = 1; k < order.size(); ++k)
     if (cycle[order[k - 1]] == cycle[order[k]])
-      return "vertices " + std::to_string(order[k - 1]) + " and " + std::to_string(order[k]) +
-             " coincide";
+      return "vertices " + name(order[k - 1]) + " and " + name(order[k]) + " coincide";
   return {};
 }
 
-// Names a pair of edges that meet where they should not. Called only once the polygon is known not to
+// Names a pair of edges that meet where they should not. Called only once the cycle is known not to
 // be simple; edges are swept by their smallest x so that most pairs are never compared.
 template <class P>
-std::string crossing_witness(const std::vector<P>& cycle) {
+std::string crossing_witness(const std::vector<P>& cycle, const NameOf& name) {
   const std::size_t n = cycle.size();
   for (std::size_t i = 0; i < n; ++i)
     if (folds_back(cycle[i], cycle[(i + 1) % n], cycle[(i + 2) % n]))
-      return "edges " + edge_name(i, n) + " and " + edge_name((i + 1) % n, n) + " overlap";
+      return "edges " + edge_name(i, n, name) + " and " + edge_name((i + 1) % n, n, name) + " overlap";
   auto lo = [&](std::size_t e) { return std::min(cycle[e].x(), cycle[(e + 1) % n].x()); };
   auto hi = [&](std::size_t e) { return std::max(cycle[e].x(), cycle[(e + 1) % n].x()); };
   std::vector<std::size_t> order(n);
@@ -69,7 +77,7 @@ std::string crossing_witness(const std::vector<P>& cycle) {
       if (adjacent) continue;
       if (closed_segments_meet(cycle[e], cycle[(e + 1) % n], cycle[f], cycle[(f + 1) % n])) {
         const auto [a, b] = std::minmax(e, f);
-        return "edge " + edge_name(a, n) + " crosses edge " + edge_name(b, n);
+        return "edge " + edge_name(a, n, name) + " crosses edge " + edge_name(b, n, name);
       }
     }
     active.push_back(e);
@@ -77,8 +85,73 @@ std::string crossing_witness(const std::vector<P>& cycle) {
   return "edges meet";
 }
 
+template <class P, class K>
+std::string simplicity_fault(const std::vector<P>& cycle, const NameOf& name) {
+  if (std::string dup = duplicate_vertices(cycle, name); !dup.empty()) return dup;
+  if (CGAL::is_simple_2(cycle.begin(), cycle.end(), K())) return {};
+  return crossing_witness(cycle, name);
+}
+
 std::size_t lowest_vertex(const std::vector<Point>& v) {
   return static_cast<std::size_t>(std::min_element(v.begin(), v.end()) - v.begin());
+}
+
+// One input ring made ready: the closing vertex dropped, each vertex that repeats its predecessor
+// merged into it, the rest checked.
+struct CleanRing {
+  Ring kept;
+  std::vector<std::uint32_t> file;                          // per kept vertex, its index in the ring's input
+  std::vector<std::pair<std::size_t, std::size_t>> merged;  // (index, index of the vertex it repeats)
+  std::size_t input_count = 0;
+};
+
+std::string ring_name(std::size_t k, std::size_t rings) {
+  if (rings == 1) return "";
+  return k == 0 ? "the outer ring" : "hole " + std::to_string(k);
+}
+
+CleanRing clean_ring(Ring ring, std::size_t k, std::size_t rings) {
+  const std::string of = rings == 1 ? "" : " of " + ring_name(k, rings);
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    if (!std::isfinite(ring[i].x()) || !std::isfinite(ring[i].y()))
+      throw PolygonError("vertex " + std::to_string(i) + of + " has a coordinate that is not finite");
+  if (ring.size() >= 2 && ring.front() == ring.back()) ring.pop_back();
+  CleanRing c;
+  c.input_count = ring.size();
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    if (i > 0 && ring[i] == c.kept.back()) {
+      c.merged.push_back({i, c.file.back()});
+      continue;
+    }
+    c.kept.push_back(ring[i]);
+    c.file.push_back(static_cast<std::uint32_t>(i));
+  }
+  while (c.kept.size() > 1 && c.kept.back() == c.kept.front()) {
+    c.merged.push_back({c.file.back(), 0});
+    c.kept.pop_back();
+    c.file.pop_back();
+  }
+  std::sort(c.merged.begin(), c.merged.end());
+  if (c.kept.size() < 3) {
+    const std::string count = std::to_string(c.kept.size()) + (c.kept.size() == 1 ? " vertex" : " vertices");
+    const std::string after = c.merged.empty() ? "" : " once repeated vertices are merged";
+    throw PolygonError(rings == 1 ? count + after + "; a polygon needs at least 3"
+                                  : ring_name(k, rings) + " has " + count + after + "; a ring needs at least 3");
+  }
+  const NameOf name = [&](std::size_t i) { return std::to_string(c.file[i]); };
+  if (std::string why = simplicity_fault<Point, Kernel>(c.kept, name); !why.empty())
+    throw PolygonError(rings == 1 ? "not simple: " + why : ring_name(k, rings) + " is not simple: " + why);
+  return c;
+}
+
+// Turns ring v round when its orientation is not the wanted one, keeping its first vertex first.
+bool orient_ring(Ring& v, bool counter_clockwise) {
+  // The lowest-leftmost vertex of a simple ring is strictly convex, so its turn gives the orientation.
+  const std::size_t n = v.size(), m = lowest_vertex(v);
+  const bool is_ccw = orient(v[(m + n - 1) % n], v[m], v[(m + 1) % n]) > 0;
+  if (is_ccw == counter_clockwise) return false;
+  std::reverse(v.begin() + 1, v.end());
+  return true;
 }
 
 }  // namespace
@@ -93,22 +166,25 @@ Rational twice_signed_area(const std::vector<Point>& cycle) {
   return sum;
 }
 
-template <class P, class K>
-bool simple_cycle(const std::vector<P>& cycle, std::string* why) {
-  if (std::string dup = duplicate_vertices(cycle); !dup.empty()) {
-    if (why) *why = dup;
-    return false;
+Rational twice_area(const Polygon& p) {
+  Rational sum = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Point& a = p[i];
+    const Point& b = p[p.next(i)];
+    sum += Rational(a.x()) * Rational(b.y()) - Rational(b.x()) * Rational(a.y());
   }
-  if (CGAL::is_simple_2(cycle.begin(), cycle.end(), K())) return true;
-  if (why) *why = crossing_witness(cycle);
-  return false;
+  return sum;
 }
 
 bool is_simple_cycle(const std::vector<Point>& cycle, std::string* why) {
-  return simple_cycle<Point, Kernel>(cycle, why);
+  std::string fault = simplicity_fault<Point, Kernel>(cycle, identity_name);
+  if (why) *why = fault;
+  return fault.empty();
 }
 bool is_simple_cycle(const std::vector<QPoint>& cycle, std::string* why) {
-  return simple_cycle<QPoint, ExactKernel>(cycle, why);
+  std::string fault = simplicity_fault<QPoint, ExactKernel>(cycle, identity_name);
+  if (why) *why = fault;
+  return fault.empty();
 }
 
 std::size_t Polygon::reflex_count() const {
@@ -123,21 +199,83 @@ std::size_t Polygon::first_reflex() const {
   return v_.size();
 }
 
-Polygon Polygon::make(std::vector<Point> input) {
-  for (std::size_t i = 0; i < input.size(); ++i)
-    if (!std::isfinite(input[i].x()) || !std::isfinite(input[i].y()))
-      throw PolygonError("vertex " + std::to_string(i) + " has a coordinate that is not finite");
-  if (input.size() >= 2 && input.front() == input.back()) input.pop_back();
-  if (input.size() < 3)
-    throw PolygonError(std::to_string(input.size()) + (input.size() == 1 ? " vertex" : " vertices") +
-                       "; a polygon needs at least 3");
-  std::string why;
-  if (!is_simple_cycle(input, &why)) throw PolygonError("not simple: " + why);
-  // The lowest-leftmost vertex of a simple polygon is strictly convex, so its turn gives the orientation.
-  const std::size_t n = input.size(), m = lowest_vertex(input);
-  const bool clockwise = orient(input[(m + n - 1) % n], input[m], input[(m + 1) % n]) < 0;
-  if (clockwise) std::reverse(input.begin() + 1, input.end());
-  return Polygon(std::move(input), clockwise);
+std::size_t Polygon::input_index(std::size_t i) const {
+  const std::size_t k = ring_of(i), s = ring_start_[k], m = ring_start_[k + 1] - s;
+  const std::size_t d = ring_reversed_[k] && i != s ? s + m - (i - s) : i;
+  return file_of_.empty() ? d : file_of_[d];
+}
+
+Rings Polygon::rings() const {
+  Rings out;
+  for (std::size_t k = 0; k < ring_count(); ++k)
+    out.emplace_back(v_.begin() + static_cast<std::ptrdiff_t>(ring_begin(k)), v_.begin() + static_cast<std::ptrdiff_t>(ring_end(k)));
+  return out;
+}
+
+std::vector<Point> Polygon::input_points() const {
+  std::vector<Point> points(input_size());
+  for (std::size_t i = 0; i < v_.size(); ++i) points[input_index(i)] = v_[i];
+  for (const auto& [index, repeats] : merged_) points[index] = points[repeats];
+  return points;
+}
+
+Polygon Polygon::make(Ring outer) {
+  Rings rings;
+  rings.push_back(std::move(outer));
+  return make_with_holes(std::move(rings));
+}
+
+Polygon Polygon::make_with_holes(Rings rings) {
+  if (rings.empty()) throw PolygonError("the polygon is empty");
+  const std::size_t count = rings.size();
+  Polygon p;
+  p.ring_start_.push_back(0);
+  std::size_t file_offset = 0;
+  bool any_merged = false;
+  std::vector<CleanRing> clean;
+  clean.reserve(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    clean.push_back(clean_ring(std::move(rings[k]), k, count));
+    any_merged = any_merged || !clean.back().merged.empty();
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    CleanRing& c = clean[k];
+    p.ring_reversed_.push_back(orient_ring(c.kept, k == 0));
+    if (any_merged)
+      for (const std::uint32_t f : c.file) p.file_of_.push_back(static_cast<std::uint32_t>(file_offset + f));
+    for (const auto& [index, repeats] : c.merged) p.merged_.push_back({file_offset + index, file_offset + repeats});
+    p.v_.insert(p.v_.end(), c.kept.begin(), c.kept.end());
+    p.ring_start_.push_back(p.v_.size());
+    file_offset += c.input_count;
+  }
+  if (count > 1) {
+    p.ring_of_.resize(p.v_.size());
+    for (std::size_t k = 0; k < count; ++k)
+      std::fill(p.ring_of_.begin() + p.ring_start_[k], p.ring_of_.begin() + p.ring_start_[k + 1],
+                static_cast<std::uint32_t>(k));
+    if (std::string fault = layout_fault({&p}); !fault.empty()) throw PolygonError(fault);
+  }
+  return p;
+}
+
+std::vector<Polygon> make_parts(std::vector<Rings> parts) {
+  if (parts.empty()) throw PolygonError("the polygon is empty");
+  std::vector<Polygon> polygons;
+  polygons.reserve(parts.size());
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    try {
+      polygons.push_back(Polygon::make_with_holes(std::move(parts[k])));
+    } catch (const PolygonError& e) {
+      if (parts.size() == 1) throw;
+      throw PolygonError("part " + std::to_string(k) + ": " + e.what());
+    }
+  }
+  if (polygons.size() > 1) {
+    std::vector<const Polygon*> all;
+    for (const Polygon& p : polygons) all.push_back(&p);
+    if (std::string fault = layout_fault(all); !fault.empty()) throw PolygonError(fault);
+  }
+  return polygons;
 }
 
 }  // namespace pd

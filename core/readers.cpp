@@ -1,7 +1,7 @@
 // The readers of core/io.h: plain text, WKT and GeoJSON (with earcut's ring arrays). Each keeps to its
 // format's grammar and refuses anything else with one reason; every coordinate is read by the rule of
-// core/coordinate.h. A WKT or GeoJSON polygon is read whole (every ring, every part) before holes and
-// multipolygons are refused, so that the refusal names what the input really holds.
+// core/coordinate.h. A reader returns every part with its rings as written; Polygon::make_with_holes
+// and make_parts do the geometric checks.
 #include "core/coordinate.h"
 #include "core/io.h"
 #include "core/json.h"
@@ -19,9 +19,6 @@ namespace pd {
 namespace {
 
 [[noreturn]] void bad(const std::string& why) { throw PolygonError(why); }
-
-using Ring = std::vector<Point>;
-using Rings = std::vector<Ring>;  // outer ring, then holes
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -43,12 +40,19 @@ double coordinate(std::string_view text, const Where& where) {
 std::string in_wkt() { return "WKT: "; }
 std::string in_geojson() { return "GeoJSON: "; }
 
-// The one polygon a file may hold for now: one part, one ring.
-Ring single_ring(std::vector<Rings> parts) {
-  if (parts.size() > 1) bad("multipolygons are not supported");
-  if (parts.empty() || parts[0].empty()) bad("the polygon is empty");
-  if (parts[0].size() > 1) bad("holes are not supported");
-  return std::move(parts[0][0]);
+// A file must hold a polygon: at least one part, each with its outer ring.
+std::vector<Rings> not_empty(std::vector<Rings> parts) {
+  if (parts.empty()) bad("the polygon is empty");
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    if (parts[k].empty()) bad(parts.size() == 1 ? "the polygon is empty" : "part " + std::to_string(k) + " is empty");
+  return parts;
+}
+
+bool starts_with_word(std::string_view text, std::string_view word) {
+  if (text.size() < word.size()) return false;
+  for (std::size_t i = 0; i < word.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(text[i])) != word[i]) return false;
+  return true;
 }
 
 // ---- plain text: `x y` per line, '#' comments, an optional count line before the first vertex.
@@ -102,18 +106,24 @@ Ring parse_txt(std::string_view content) {
   return ring;
 }
 
-// ---- WKT (OGC 06-103r4, 7.2): POLYGON | MULTIPOLYGON, EMPTY, rings of `x y` points.
+// ---- WKT (OGC 06-103r4, 7.2): POLYGON | MULTIPOLYGON, Z | M | ZM, EMPTY, rings of points; EWKT's
+// `SRID=N;` prefix. Z and M values are read (by the coordinate rule) and dropped.
 
 class WktReader {
  public:
   explicit WktReader(std::string_view text) : text_(text) {}
 
   std::vector<Rings> read() {
+    skip_srid();
     const std::string tag = upper(word());
     if (tag != "POLYGON" && tag != "MULTIPOLYGON") bad("WKT: " + quoted_input(tag) + " is not POLYGON or MULTIPOLYGON");
     std::vector<Rings> parts;
-    const std::string next = peek_word();
-    if (next == "Z" || next == "M" || next == "ZM") bad("WKT with Z or M coordinates is not supported");
+    std::string next = peek_word();
+    if (next == "Z" || next == "M" || next == "ZM") {
+      dimension_ = next == "ZM" ? 4 : 3;
+      word();
+      next = peek_word();
+    }
     if (next == "EMPTY") {
       word();
     } else if (tag == "POLYGON") {
@@ -143,9 +153,25 @@ class WktReader {
     expect(')');
     return ring;
   }
+  // x y, then the Z and M values the tag (or, untagged, the first point) says each point has.
   Point point() {
     const double x = number(), y = number();
+    std::size_t extra = 0;
+    for (; extra < 2 && (dimension_ == 0 || extra + 2 < dimension_) && starts_number(); ++extra) number();
+    if (dimension_ == 0) dimension_ = 2 + extra;
+    if (extra + 2 != dimension_) fail("expected " + std::to_string(dimension_) + " coordinates in each point");
     return Point(x, y);
+  }
+  bool starts_number() {
+    skip_space();
+    return at_ < text_.size() && text_[at_] != ',' && text_[at_] != ')' && text_[at_] != '(';
+  }
+  void skip_srid() {
+    skip_space();
+    if (!starts_with_word(text_.substr(at_), "srid=")) return;
+    const std::size_t semicolon = text_.find(';', at_);
+    if (semicolon == std::string_view::npos) fail("expected ';' after SRID=");
+    at_ = semicolon + 1;
   }
   double number() {
     skip_space();
@@ -195,25 +221,26 @@ class WktReader {
 
   std::string_view text_;
   std::size_t at_ = 0;
+  std::size_t dimension_ = 0;  // coordinates per point: 2, 3 or 4; 0 until known
 };
 
 // ---- GeoJSON (RFC 7946): Polygon, MultiPolygon, a Feature of one, a FeatureCollection of Features;
-// earcut's fixtures: a bare array of rings, or one ring.
+// earcut's fixtures: a bare array of rings, or one ring. A position's altitude (and anything after it)
+// is dropped.
 
 Ring ring_of(const Json& ring) {
   if (!ring.is_array()) bad("GeoJSON: a ring must be an array of positions");
   Ring out;
   if (ring.is_packed()) {
     if (ring.width < 2) bad("GeoJSON: a position must be [x, y]");
-    if (ring.width > 2) bad("GeoJSON: positions with more than 2 coordinates are not supported");
-    out.reserve(ring.packed.size() / 2);
-    for (std::size_t k = 0; k < ring.packed.size(); k += 2) out.emplace_back(ring.packed[k], ring.packed[k + 1]);
+    out.reserve(ring.packed.size() / ring.width);
+    for (std::size_t k = 0; k < ring.packed.size(); k += ring.width) out.emplace_back(ring.packed[k], ring.packed[k + 1]);
     return out;
   }
   for (const Json& pos : ring.items) {
     if (!pos.is_array() || pos.items.size() < 2) bad("GeoJSON: a position must be [x, y]");
-    if (pos.items.size() > 2) bad("GeoJSON: positions with more than 2 coordinates are not supported");
-    if (!pos.items[0].is_number() || !pos.items[1].is_number()) bad("GeoJSON: a coordinate is not a number");
+    for (const Json& c : pos.items)
+      if (!c.is_number()) bad("GeoJSON: a coordinate is not a number");
     const double x = coordinate(pos.items[0].text, in_geojson);
     out.emplace_back(x, coordinate(pos.items[1].text, in_geojson));
   }
@@ -285,13 +312,6 @@ std::string_view without_bom(std::string_view content) {
   return content.substr(0, 3) == "\xEF\xBB\xBF" ? content.substr(3) : content;
 }
 
-bool starts_with_word(std::string_view text, std::string_view word) {
-  if (text.size() < word.size()) return false;
-  for (std::size_t i = 0; i < word.size(); ++i)
-    if (std::tolower(static_cast<unsigned char>(text[i])) != word[i]) return false;
-  return true;
-}
-
 // Reads a stream whole, refusing a NUL byte as soon as it arrives (binary data, or /dev/zero, which
 // would otherwise be read until memory runs out).
 std::string read_text(std::FILE* in, const std::string& name) {
@@ -310,30 +330,30 @@ std::string read_text(std::FILE* in, const std::string& name) {
 
 }  // namespace
 
-std::vector<Point> parse_polygon(const std::string& input) {
+std::vector<Rings> parse_parts(const std::string& input) {
   const std::string_view content = without_bom(input);
   const std::string_view start = trim(content);
   if (start.empty()) bad("the input is empty");
   if (start[0] == '{' || start[0] == '[') {
     try {
-      return single_ring(geojson_parts(parse_json(content, true)));
+      return not_empty(geojson_parts(parse_json(content, true)));
     } catch (const JsonError& e) {
       bad(e.what());
     }
   }
-  if (starts_with_word(start, "polygon") || starts_with_word(start, "multipolygon"))
-    return single_ring(WktReader(start).read());
-  return parse_txt(content);
+  if (starts_with_word(start, "polygon") || starts_with_word(start, "multipolygon") || starts_with_word(start, "srid="))
+    return not_empty(WktReader(start).read());
+  return {{parse_txt(content)}};
 }
 
-std::vector<Point> read_polygon_file(const std::string& path) {
-  if (path == "-") return parse_polygon(read_text(stdin, "the standard input"));
+std::vector<Rings> read_parts_file(const std::string& path) {
+  if (path == "-") return parse_parts(read_text(stdin, "the standard input"));
   struct stat info;
   if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
     bad(path + " is a directory; --input takes one polygon file");
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(path.c_str(), "rb"), std::fclose);
   if (!in) bad("cannot read " + path + ": " + std::strerror(errno));
-  return parse_polygon(read_text(in.get(), path));
+  return parse_parts(read_text(in.get(), path));
 }
 
 }  // namespace pd

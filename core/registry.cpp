@@ -3,6 +3,10 @@
 namespace pd {
 
 std::optional<std::string> refusal(const Algorithm& a, const Polygon& p) {
+  if (!a.accepts.holes && p.hole_count() > 0) {
+    const std::size_t h = p.hole_count();
+    return a.name + " does not take polygons with holes; this one has " + std::to_string(h) + (h == 1 ? " hole" : " holes");
+  }
   if (a.accepts.convex_only && p.reflex_count() > 0) {
     const std::size_t r = p.reflex_count();
     return a.name + " takes only convex polygons; this one has " + std::to_string(r) +

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -53,32 +54,36 @@ bool wide_is_exact(const std::vector<Point>& pts, const std::vector<Piece>& piec
 }
 
 // The area test: the first piece whose area is not positive (clockwise or flat), and whether the
-// areas add up to the polygon's, whose vertices are the first n points.
+// areas add up to the polygon's (its outer ring's less its holes', from its first n points).
 struct AreaCheck {
   std::string piece_fault;
   bool adds_up = false;
 };
 
 template <class Number, class AreaOf>
-AreaCheck check_areas(std::size_t n, const std::vector<Piece>& pieces, AreaOf twice_area_of) {
+AreaCheck check_areas(const Polygon& p, const std::vector<Piece>& pieces, AreaOf twice_area_of) {
   Number total = 0;
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const Number area = twice_area_of(pieces[k]);
     if (area <= 0) return {piece_name(k) + " is clockwise or has no area"};
     total += area;
   }
-  Piece boundary(n);
-  for (std::size_t i = 0; i < n; ++i) boundary[i] = static_cast<VertexId>(i);
-  return {{}, total == twice_area_of(boundary)};
+  Number polygon = 0;
+  for (std::size_t r = 0; r < p.ring_count(); ++r) {
+    Piece ring(p.ring_end(r) - p.ring_begin(r));
+    std::iota(ring.begin(), ring.end(), static_cast<VertexId>(p.ring_begin(r)));
+    polygon += twice_area_of(ring);
+  }
+  return {{}, total == polygon};
 }
 
 template <class P>
-AreaCheck check_areas(std::size_t n, const std::vector<P>& pts, const std::vector<Piece>& pieces) {
+AreaCheck check_areas(const Polygon& p, const std::vector<P>& pts, const std::vector<Piece>& pieces) {
   if constexpr (std::is_same_v<P, Point>) {
     if (wide_is_exact(pts, pieces))
-      return check_areas<Wide>(n, pieces, [&](const Piece& piece) { return twice_area_wide(pts, piece); });
+      return check_areas<Wide>(p, pieces, [&](const Piece& piece) { return twice_area_wide(pts, piece); });
   }
-  return check_areas<Rational>(n, pieces, [&](const Piece& piece) { return twice_area(pts, piece); });
+  return check_areas<Rational>(p, pieces, [&](const Piece& piece) { return twice_area(pts, piece); });
 }
 
 // Upwards (or rightwards along the horizontal) versus downwards edge directions.
@@ -240,13 +245,16 @@ Validation validate_with(const Polygon& p, const std::vector<P>& pts, const std:
     if (std::string f = index_fault(pieces[k], pts.size()); !f.empty()) return fail(piece_name(k) + " " + f);
     if (std::string f = shape_fault(pts, pieces[k], kind); !f.empty()) return fail(piece_name(k) + " " + f);
   }
-  const AreaCheck areas = check_areas(p.size(), pts, pieces);
+  const AreaCheck areas = check_areas(p, pts, pieces);
   if (!areas.piece_fault.empty()) return fail(areas.piece_fault);
   if (std::string f = chain_fault(p, pts, pieces); !f.empty()) return fail(f);
   if (!areas.adds_up) return fail("the pieces' areas do not add up to the polygon's");
-  if (kind == Kind::Triangulation && pieces.size() + 2 != pts.size())
+  // Euler's formula: m vertices and h holes make m + 2h - 2 triangles.
+  const std::size_t triangles = pts.size() + 2 * p.hole_count() - 2;
+  if (kind == Kind::Triangulation && pieces.size() != triangles)
     return fail(std::to_string(pieces.size()) + " triangles; a triangulation of " + std::to_string(pts.size()) +
-                " vertices has " + std::to_string(pts.size() - 2));
+                " vertices" + (p.hole_count() ? " and " + std::to_string(p.hole_count()) + " holes" : "") + " has " +
+                std::to_string(triangles));
   return {};
 }
 

@@ -4,8 +4,10 @@
 // (a triangle; y-monotone; convex) and the pieces tile the polygon exactly. The tiling test is the
 // boundary-chain argument: when every piece is simple and counter-clockwise, its winding number is 1
 // inside and 0 outside, so if the sum of the pieces' directed edges equals the polygon's boundary
-// (each boundary edge once, forwards; every other edge as often forwards as backwards) the pieces'
-// indicator functions add up to the polygon's: no gap, no overlap, nothing outside. Areas are compared
+// (each boundary edge once, forwards: the outer ring counter-clockwise, every hole clockwise; every
+// other edge as often forwards as backwards) the pieces' indicator functions add up to the polygon's,
+// whose winding number is the outer ring's less the holes': no gap, no overlap, nothing outside, nothing
+// in a hole. Areas are compared
 // as well (exact rationals), as a second, independent line. All predicates are exact.
 #pragma once
 

@@ -194,12 +194,12 @@ std::string list_json() {
 // The README's algorithm table.
 std::string list_markdown() {
   std::string out =
-      "| name | kind | Steiner | optimal | time | pieces | source | peer |\n"
-      "|---|---|---|---|---|---|---|---|\n";
+      "| name | kind | Steiner | optimal | holes | time | pieces | source | peer |\n"
+      "|---|---|---|---|---|---|---|---|---|\n";
   for (const Algorithm& a : algorithms()) {
     out += "| `" + a.name + "` | " + kind_name(a.kind) + " | " + (a.steiner ? "yes" : "no") + " | " +
-           (a.optimal ? "yes" : "no") + " | O(" + a.time_bound + ") | " + a.pieces_bound + " | " + a.source + " | " +
-           (is_peer(a) ? a.peer : "") + " |\n";
+           (a.optimal ? "yes" : "no") + " | " + (a.accepts.holes ? "yes" : "no") + " | O(" + a.time_bound + ") | " +
+           a.pieces_bound + " | " + a.source + " | " + (is_peer(a) ? a.peer : "") + " |\n";
   }
   return out;
 }
@@ -264,7 +264,7 @@ int cmd_generate(const std::vector<std::string>& args) {
   } catch (const std::invalid_argument& e) {
     usage(e.what());
   }
-  emit(format_polygon(ring, format), vm["output"].as<std::string>());
+  emit(format_polygon({ring}, format), vm["output"].as<std::string>());
   return 0;
 }
 
@@ -277,52 +277,93 @@ struct RunOutput {
 // "" or " (--max-memory SIZE)": what an out-of-memory message adds.
 std::string memory_note;
 
-// The result's pieces, validation and report.
-RunOutput report(const Algorithm& algo, const Polygon& polygon, const Decomposition& d, const Counters& counters,
-                 double seconds, bool json, bool validate_result, bool svg) {
+// One part's pieces and validation; `reason` is empty when they are valid or were not validated.
+struct PartCheck {
   std::vector<Piece> pieces;
   std::optional<bool> valid;
   std::string reason;
+};
+
+PartCheck check_part(const Algorithm& algo, const Polygon& polygon, const Decomposition& d, bool validate_result) {
+  PartCheck c;
   try {
-    pieces = pieces_of(polygon, d);
+    c.pieces = pieces_of(polygon, d);
   } catch (const std::invalid_argument& e) {
-    valid = false;
-    reason = e.what();
+    c.valid = false;
+    c.reason = e.what();
   }
-  if (validate_result && !valid) {
-    const Validation v = validate_pieces(polygon, exact_points(polygon, d), pieces, algo.kind, algo.steiner);
-    valid = v.ok;
-    reason = v.reason;
+  if (validate_result && !c.valid) {
+    const Validation v = validate_pieces(polygon, exact_points(polygon, d), c.pieces, algo.kind, algo.steiner);
+    c.valid = v.ok;
+    c.reason = v.reason;
   }
+  return c;
+}
+
+std::string count_text(const char* name, std::size_t value, bool shown) {
+  return shown ? std::string(" ") + name + "=" + std::to_string(value) : "";
+}
+
+// The result's pieces, validation and report, over every part.
+RunOutput report(const Algorithm& algo, const std::vector<Polygon>& parts, const std::vector<Decomposition>& ds,
+                 const Counters& counters, double seconds, bool json, bool validate_result, bool svg) {
+  std::vector<PartCheck> checks;
+  std::vector<PartResult> results;
+  std::optional<bool> valid;
+  std::string reason;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    checks.push_back(check_part(algo, parts[k], ds[k], validate_result));
+    if (checks[k].valid) valid = valid.value_or(true) && *checks[k].valid;
+    if (reason.empty() && !checks[k].reason.empty())
+      reason = (parts.size() > 1 ? "part " + std::to_string(k) + ": " : "") + checks[k].reason;
+  }
+  for (std::size_t k = 0; k < parts.size(); ++k) results.push_back({&parts[k], &ds[k], &checks[k].pieces});
   RunOutput result;
   if (json) {
-    result.out = run_json({algo.name, &polygon, &d, &pieces, valid, seconds, &counters});
+    result.out = run_json({algo.name, results, valid, seconds, &counters});
   } else {
-    result.out = algo.name + ": n=" + std::to_string(polygon.size()) + " reflex=" + std::to_string(polygon.reflex_count()) +
-                 " pieces=" + std::to_string(pieces.size()) + " steiner=" + std::to_string(d.steiner.size()) +
+    std::size_t n = 0, reflex = 0, holes = 0, pieces = 0, steiner = 0;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      n += parts[k].input_size();
+      reflex += parts[k].reflex_count();
+      holes += parts[k].hole_count();
+      pieces += checks[k].pieces.size();
+      steiner += ds[k].steiner.size();
+    }
+    result.out = algo.name + ": n=" + std::to_string(n) + " reflex=" + std::to_string(reflex) +
+                 count_text("holes", holes, holes > 0) + count_text("parts", parts.size(), parts.size() > 1) +
+                 " pieces=" + std::to_string(pieces) + " steiner=" + std::to_string(steiner) +
                  (valid ? std::string(" valid=") + (*valid ? "yes" : "NO (" + reason + ")") : "") +
                  " seconds=" + double_text(seconds) + "\n";
   }
   if (valid == false) result.invalid = reason.empty() ? "no reason given" : reason;
-  if (svg) result.svg = run_svg(polygon, d, pieces, algo.name);
+  if (svg) result.svg = run_svg(results, algo.name);
   return result;
 }
 
-RunOutput run_output(const Algorithm& algo, const Polygon& polygon, bool json, bool validate_result, bool svg) {
+// Runs the algorithm on each part in turn; the seconds and the counters are totals over the parts.
+RunOutput run_output(const Algorithm& algo, const std::vector<Polygon>& parts, bool json, bool validate_result,
+                     bool svg) {
   Counters counters;
-  Decomposition d;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    d = algo.run(polygon, counters);
-  } catch (const std::bad_alloc&) {
-    throw Exit{kAlgorithmFailed, algo.name + " ran out of memory" + memory_note};
-  } catch (const std::exception& e) {
-    throw Exit{kAlgorithmFailed, algo.name + " failed: " + e.what()};
+  std::vector<Decomposition> ds(parts.size());
+  double seconds = 0;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    Counters part_counters;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      ds[k] = algo.run(parts[k], part_counters);
+    } catch (const std::bad_alloc&) {
+      throw Exit{kAlgorithmFailed, algo.name + " ran out of memory" + memory_note};
+    } catch (const std::exception& e) {
+      throw Exit{kAlgorithmFailed, algo.name + " failed" + (parts.size() > 1 ? " on part " + std::to_string(k) : "") +
+                                       ": " + e.what()};
+    }
+    seconds += ds[k].own_seconds ? *ds[k].own_seconds
+                                 : std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (const auto& [name, value] : part_counters) counters[name] += value;
   }
-  const double seconds = d.own_seconds ? *d.own_seconds
-                                        : std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   try {
-    return report(algo, polygon, d, counters, seconds, json, validate_result, svg);
+    return report(algo, parts, ds, counters, seconds, json, validate_result, svg);
   } catch (const std::bad_alloc&) {
     throw Exit{kAlgorithmFailed, "out of memory validating and reporting " + algo.name + "'s result" + memory_note};
   }
@@ -441,11 +482,11 @@ void limit_memory_growth(std::uint64_t bytes, const std::string& text) {
   memory_note = " (--max-memory " + text + ")";
 }
 
-// The polygon of --input, through the one checked door: a bad polygon is exit 3, running out of memory
-// while reading it exit 4.
-Polygon read_input(const std::string& input) {
+// The polygon of --input (a multipolygon's parts), through the one checked door: a bad polygon is exit
+// 3, running out of memory while reading it exit 4.
+std::vector<Polygon> read_input(const std::string& input) {
   try {
-    return Polygon::make(read_polygon_file(input));
+    return make_parts(read_parts_file(input));
   } catch (const PolygonError& e) {
     throw Exit{kBadPolygon, e.what()};
   } catch (const std::bad_alloc&) {
@@ -481,13 +522,18 @@ int cmd_run(const std::vector<std::string>& args) {
   }
   const std::string svg = svg_path(vm);
   if (vm.count("max-memory")) limit_memory_growth(byte_size(vm["max-memory"].as<std::string>()), vm["max-memory"].as<std::string>());
-  const Polygon polygon = read_input(vm["input"].as<std::string>());
-  if (const auto why = refusal(*algo, polygon)) throw Exit{kBadPolygon, *why};
-  const auto compute = [&] { return run_output(*algo, polygon, vm.count("json") > 0, vm.count("no-validate") == 0, !svg.empty()); };
+  const std::vector<Polygon> parts = read_input(vm["input"].as<std::string>());
+  std::size_t n = 0, reflex = 0;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    if (const auto why = refusal(*algo, parts[k]))
+      throw Exit{kBadPolygon, (parts.size() > 1 ? "part " + std::to_string(k) + ": " : "") + *why};
+    n += parts[k].size();
+    reflex += parts[k].reflex_count();
+  }
+  const auto compute = [&] { return run_output(*algo, parts, vm.count("json") > 0, vm.count("no-validate") == 0, !svg.empty()); };
   std::optional<RunOutput> result;
   {
-    const Heartbeat heartbeat(name + " on n = " + std::to_string(polygon.size()) + ", r = " +
-                              std::to_string(polygon.reflex_count()) +
+    const Heartbeat heartbeat(name + " on n = " + std::to_string(n) + ", r = " + std::to_string(reflex) +
                               (max_seconds ? " (stops at " + double_text(*max_seconds) + " s)" : ""));
     result = max_seconds ? with_deadline(name, *max_seconds, compute) : compute();
   }
@@ -590,7 +636,12 @@ int cmd_cut(const std::vector<std::string>& args) {
       "weights", po::value<std::string>()->default_value("reflex"), "reflex|all|FILE")(
       "vertical", "Theorem 3's vertical chord instead of the diagonal")("json", "JSON output")("help,h", "this help");
   const auto vm = parse("cut", args, opts);
-  const Polygon polygon = read_input(vm["input"].as<std::string>());
+  const std::vector<Polygon> parts = read_input(vm["input"].as<std::string>());
+  if (parts.size() > 1 || parts[0].hole_count() > 0)
+    throw Exit{kBadPolygon, "cut takes a polygon without holes: the polygon-cutting theorem is for simple polygons"};
+  if (!parts[0].merged().empty())
+    throw Exit{kBadPolygon, "cut takes a polygon without repeated vertices (its weights are one per vertex)"};
+  const Polygon& polygon = parts[0];
   const std::vector<int> weights = cut_weights(vm["weights"].as<std::string>(), polygon);
   std::string out;
   try {
@@ -613,12 +664,23 @@ int cmd_check(const std::vector<std::string>& args) {
   opts.add_options()("input", po::value<std::string>()->required(), "polygon file, or - for the standard input")(
       "json", "JSON output")("help,h", "this help");
   const auto vm = parse("check", args, opts);
-  const Polygon p = read_input(vm["input"].as<std::string>());
-  const std::string n = std::to_string(p.size()), r = std::to_string(p.reflex_count());
-  write_stdout(vm.count("json") ? "{\"n\": " + n + ", \"reflex\": " + r + ", \"clockwise\": " +
-                                      json_bool(p.input_was_clockwise()) + "}\n"
-                                : "polygon: n=" + n + " reflex=" + r + " orientation=" +
-                                      (p.input_was_clockwise() ? "clockwise" : "counter-clockwise") + "\n");
+  const std::vector<Polygon> parts = read_input(vm["input"].as<std::string>());
+  std::size_t n = 0, reflex = 0, holes = 0, merged = 0;
+  for (const Polygon& p : parts) {
+    n += p.input_size();
+    reflex += p.reflex_count();
+    holes += p.hole_count();
+    merged += p.merged().size();
+  }
+  const bool clockwise = parts[0].input_was_clockwise();
+  auto number = [](std::size_t v) { return std::to_string(v); };
+  write_stdout(vm.count("json") ? "{\"n\": " + number(n) + ", \"reflex\": " + number(reflex) + ", \"clockwise\": " +
+                                      json_bool(clockwise) + ", \"holes\": " + number(holes) + ", \"parts\": " +
+                                      number(parts.size()) + ", \"merged\": " + number(merged) + "}\n"
+                                : "polygon: n=" + number(n) + " reflex=" + number(reflex) + " orientation=" +
+                                      (clockwise ? "clockwise" : "counter-clockwise") + count_text("holes", holes, holes > 0) +
+                                      count_text("parts", parts.size(), parts.size() > 1) +
+                                      count_text("merged", merged, merged > 0) + "\n");
   return 0;
 }
 

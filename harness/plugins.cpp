@@ -220,11 +220,17 @@ class PluginProcess {
 
 // ---- the protocol ----
 
+// The outer ring counter-clockwise as "points", each hole clockwise in "holes": vertex ids in order.
 std::string request_line(const Polygon& p) {
-  std::string line = "{\"points\": [";
-  for (std::size_t i = 0; i < p.size(); ++i)
-    line += std::string(i ? ", [" : "[") + double_text(p[i].x()) + ", " + double_text(p[i].y()) + "]";
-  return line + "], \"holes\": []}";
+  auto ring = [&](std::size_t k) {
+    std::string text = "[";
+    for (std::size_t i = p.ring_begin(k); i < p.ring_end(k); ++i)
+      text += std::string(i > p.ring_begin(k) ? ", [" : "[") + double_text(p[i].x()) + ", " + double_text(p[i].y()) + "]";
+    return text + "]";
+  };
+  std::string line = "{\"points\": " + ring(0) + ", \"holes\": [";
+  for (std::size_t k = 1; k < p.ring_count(); ++k) line += (k > 1 ? ", " : "") + ring(k);
+  return line + "]}";
 }
 
 // A coordinate of the protocol: a JSON number, or an exact rational as the string "p/q".

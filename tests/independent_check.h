@@ -1,15 +1,18 @@
 // An exact tiling check that shares no code with core/validate: used to show that the validator's
 // verdict (and so `run --json`'s "valid") agrees with a second, differently built judgement.
 //
-// For convex pieces it is complete: each piece convex and counter-clockwise (every vertex left of or on
-// every edge line), pairwise separated by an edge line, inside the polygon (no polygon vertex strictly
-// inside a piece, no piece edge properly crossing a polygon edge, an interior point inside the
-// polygon), and the areas add up. For other pieces (y-monotone) it checks simplicity by brute force,
-// the areas, and that sample points strictly inside the polygon lie strictly inside exactly one piece.
-// Quadratic and worse (bounding boxes prune the pairs they decide): for small polygons only.
+// The polygon is given by its rings: the outer ring counter-clockwise, the holes clockwise. For convex
+// pieces it checks: each piece convex and counter-clockwise (every vertex left of or on every edge
+// line), pairwise separated by an edge line, inside the polygon (no ring vertex and no ring edge's
+// midpoint strictly inside a piece, no piece edge properly crossing a ring edge, an interior point
+// inside the polygon), the areas add up, and sample points strictly inside the polygon lie strictly
+// inside exactly one piece. For other pieces (y-monotone) it checks simplicity by brute force, the
+// areas and the samples. Quadratic and worse (bounding boxes prune the pairs they decide): for small
+// polygons only.
 #pragma once
 
 #include "core/geometry.h"
+#include "core/polygon.h"
 
 #include <algorithm>
 #include <map>
@@ -32,6 +35,17 @@ inline Rational area2(const Cycle& c) {
   for (std::size_t i = 0; i < c.size(); ++i)
     s += c[i].x() * c[(i + 1) % c.size()].y() - c[(i + 1) % c.size()].x() * c[i].y();
   return s;
+}
+
+// The polygon's rings, exact: the outer ring counter-clockwise, the holes clockwise.
+inline std::vector<Cycle> rings_of(const Polygon& p) {
+  std::vector<Cycle> rings;
+  for (const Ring& ring : p.rings()) {
+    Cycle c;
+    for (const Point& q : ring) c.push_back(to_exact(q));
+    rings.push_back(c);
+  }
+  return rings;
 }
 
 inline bool convex_ccw(const Cycle& c) {
@@ -80,6 +94,17 @@ inline int locate(const Cycle& c, const QPoint& q) {
   return inside ? 1 : -1;
 }
 
+// The same for the polygon with holes: +1 inside the outer ring and outside every hole.
+inline int locate_in(const std::vector<Cycle>& rings, const QPoint& q) {
+  int where = locate(rings[0], q);
+  for (std::size_t k = 1; k < rings.size() && where == 1; ++k) {
+    Cycle hole(rings[k].rbegin(), rings[k].rend());
+    const int in_hole = locate(hole, q);
+    where = in_hole == 1 ? -1 : in_hole == 0 ? 0 : 1;
+  }
+  return where;
+}
+
 inline bool simple_brute(const Cycle& c) {
   const std::size_t m = c.size();
   for (std::size_t i = 0; i < m; ++i)
@@ -126,15 +151,15 @@ inline QPoint centroid(const Cycle& c) {
   return QPoint(x / Rational(c.size()), y / Rational(c.size()));
 }
 
-inline bool samples_covered_once(const Cycle& polygon, const std::vector<Cycle>& pieces) {
-  const Box outline = box_of(polygon);
+inline bool samples_covered_once(const std::vector<Cycle>& rings, const std::vector<Cycle>& pieces) {
+  const Box outline = box_of(rings[0]);
   const Rational &x0 = outline.x0, &x1 = outline.x1, &y0 = outline.y0, &y1 = outline.y1;
   const std::vector<Box> boxes = boxes_of(pieces);
   const int steps = 23;
   for (int i = 1; i < steps; ++i)
     for (int j = 1; j < steps; ++j) {
       const QPoint q(x0 + (x1 - x0) * Rational(2 * i + 1, 2 * steps + 3), y0 + (y1 - y0) * Rational(2 * j + 1, 2 * steps + 5));
-      const int where = locate(polygon, q);
+      const int where = locate_in(rings, q);
       if (where == 0) continue;
       int strictly = 0, touching = 0;
       for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -148,15 +173,16 @@ inline bool samples_covered_once(const Cycle& polygon, const std::vector<Cycle>&
   return true;
 }
 
-inline bool tiles(const Cycle& polygon, const std::vector<Cycle>& pieces, bool convex) {
-  Rational total = 0;
+inline bool tiles(const std::vector<Cycle>& rings, const std::vector<Cycle>& pieces, bool convex) {
+  Rational total = 0, polygon_area = 0;
   for (const Cycle& piece : pieces) {
     if (piece.size() < 3) return false;
     if (convex ? !convex_ccw(piece) : !simple_brute(piece)) return false;
     total += area2(piece);
   }
-  if (total != area2(polygon)) return false;
-  if (!samples_covered_once(polygon, pieces)) return false;
+  for (const Cycle& ring : rings) polygon_area += area2(ring);
+  if (total != polygon_area) return false;
+  if (!samples_covered_once(rings, pieces)) return false;
   if (!convex) return true;
   // Two convex pieces with disjoint boxes are disjoint, and then one of their edge lines separates them
   // (the separating axis theorem), so `separated` would hold; a vertex outside a piece's box is not
@@ -165,15 +191,17 @@ inline bool tiles(const Cycle& polygon, const std::vector<Cycle>& pieces, bool c
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     for (std::size_t j = i + 1; j < pieces.size(); ++j)
       if (!disjoint(boxes[i], boxes[j]) && !separated(pieces[i], pieces[j])) return false;
-    if (locate(polygon, centroid(pieces[i])) != 1) return false;
-    for (const QPoint& v : polygon)
-      if (contains(boxes[i], v) && locate(pieces[i], v) == 1) return false;
-    for (std::size_t b = 0; b < polygon.size(); ++b) {
-      const QPoint &e0 = polygon[b], &e1 = polygon[(b + 1) % polygon.size()];
-      if (disjoint(boxes[i], box_of({e0, e1}))) continue;
-      for (std::size_t a = 0; a < pieces[i].size(); ++a)
-        if (proper_cross(pieces[i][a], pieces[i][(a + 1) % pieces[i].size()], e0, e1)) return false;
-    }
+    if (locate_in(rings, centroid(pieces[i])) != 1) return false;
+    for (const Cycle& ring : rings)
+      for (std::size_t b = 0; b < ring.size(); ++b) {
+        const QPoint &e0 = ring[b], &e1 = ring[(b + 1) % ring.size()];
+        const QPoint middle((e0.x() + e1.x()) / 2, (e0.y() + e1.y()) / 2);
+        for (const QPoint& v : {e0, middle})
+          if (contains(boxes[i], v) && locate(pieces[i], v) == 1) return false;
+        if (disjoint(boxes[i], box_of({e0, e1}))) continue;
+        for (std::size_t a = 0; a < pieces[i].size(); ++a)
+          if (proper_cross(pieces[i][a], pieces[i][(a + 1) % pieces[i].size()], e0, e1)) return false;
+      }
   }
   return true;
 }
@@ -194,16 +222,18 @@ inline std::string canonical_text(const Cycle& c) {
 
 // `tiles`, computed once per (polygon, piece set) in a process: the same pieces of the same polygon,
 // whichever algorithm, rotation or vertex order produced them, are checked once.
-inline bool tiles_once(const Cycle& polygon, const std::vector<Cycle>& pieces, bool convex) {
+inline bool tiles_once(const std::vector<Cycle>& rings, const std::vector<Cycle>& pieces, bool convex) {
   static std::map<std::string, bool> known;
   std::vector<std::string> piece_texts;
   for (const Cycle& piece : pieces) piece_texts.push_back(canonical_text(piece));
   std::sort(piece_texts.begin(), piece_texts.end());
-  std::string key = canonical_text(polygon) + (convex ? "|convex|" : "|any|");
+  std::string key;
+  for (const Cycle& ring : rings) key += canonical_text(ring) + "/";
+  key += convex ? "|convex|" : "|any|";
   for (const std::string& t : piece_texts) key += t + "|";
   const auto found = known.find(key);
   if (found != known.end()) return found->second;
-  return known[key] = tiles(polygon, pieces, convex);
+  return known[key] = tiles(rings, pieces, convex);
 }
 
 }  // namespace pd::independent

@@ -12,6 +12,16 @@
 
 namespace pd::lattice {
 
+// Whether `ring` is a simple polygon as it is: Polygon::make neither refuses it nor drops or merges a
+// repeated vertex.
+inline bool simple_as_given(const std::vector<Point>& ring) {
+  try {
+    return Polygon::make(ring).size() == ring.size();
+  } catch (const PolygonError&) {
+    return false;
+  }
+}
+
 // A random simple polygon on a small lattice, grown from a triangle by replacing an edge ab with a, c, b
 // for a random lattice point c while the result stays simple: collinear vertices, vertices on the
 // extensions of edges and diagonals, and 180-degree vertices are everywhere.
@@ -20,20 +30,12 @@ inline Polygon lattice_polygon(std::size_t n, int grid, std::mt19937& rng) {
   while (true) {
     std::vector<Point> ring;
     for (int k = 0; k < 3; ++k) ring.emplace_back(coord(rng), coord(rng));
-    try {
-      Polygon::make(ring);
-    } catch (const PolygonError&) {
-      continue;
-    }
+    if (!simple_as_given(ring)) continue;
     for (int attempt = 0; ring.size() < n && attempt < 400; ++attempt) {
       std::vector<Point> grown = ring;
       const auto at = std::uniform_int_distribution<std::size_t>(0, ring.size() - 1)(rng);
       grown.insert(grown.begin() + static_cast<std::ptrdiff_t>(at) + 1, Point(coord(rng), coord(rng)));
-      try {
-        Polygon::make(grown);
-        ring = grown;
-      } catch (const PolygonError&) {
-      }
+      if (simple_as_given(grown)) ring = grown;
     }
     if (ring.size() == n) return Polygon::make(ring);
   }
@@ -59,20 +61,13 @@ inline std::optional<Polygon> notched_rectangle(std::mt19937& rng) {
     auto& v = ring[rng() % ring.size()];
     v.first += static_cast<int>(rng() % 5) - 2;
     v.second += static_cast<int>(rng() % 5) - 2;
-    try {
-      Polygon::make(points(ring));
-    } catch (const PolygonError&) {
-      ring = before;
-    }
+    if (!simple_as_given(points(ring))) ring = before;
   }
   std::vector<std::pair<int, int>> kept;
   for (const auto& v : ring)
     if (rng() % 3 != 0) kept.push_back(v);
-  try {
-    return Polygon::make(points(kept));
-  } catch (const PolygonError&) {
-    return std::nullopt;
-  }
+  if (!simple_as_given(points(kept))) return std::nullopt;
+  return Polygon::make(points(kept));
 }
 
 }  // namespace pd::lattice

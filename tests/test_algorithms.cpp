@@ -125,17 +125,16 @@ Outcome run_and_check(const Algorithm& a, const Polygon& p, const std::string& l
     const std::vector<QPoint> pts = exact_points(p, d);
     std::vector<independent::Cycle> cycles;
     for (const Piece& piece : pieces) cycles.push_back(cycle_of(pts, piece));
-    const independent::Cycle outline(pts.begin(), pts.begin() + p.size());
-    const bool independent_ok = independent::tiles_once(outline, cycles, a.kind != Kind::Partition);
+    const bool independent_ok = independent::tiles_once(independent::rings_of(p), cycles, a.kind != Kind::Partition);
     EXPECT_EQ(v.ok, independent_ok) << label << ": validator says " << (v.ok ? "valid" : v.reason);
   }
   if (v.ok) {
-    const std::size_t n = p.size(), r = p.reflex_count();
+    const std::size_t n = p.size(), r = p.reflex_count(), h = p.hole_count();
     if (a.kind == Kind::Triangulation) {
-      EXPECT_EQ(pieces.size(), n - 2) << label;
+      EXPECT_EQ(pieces.size(), n + 2 * h - 2) << label;
     }
     if (a.kind == Kind::Convex) {
-      EXPECT_GE(pieces.size(), (r + 1) / 2 + 1) << label;
+      EXPECT_GE(pieces.size() + h, (r + 1) / 2 + 1) << label;
     }
     if (a.pieces_bound == "== r+1") {
       EXPECT_EQ(pieces.size(), r + 1) << label;
@@ -216,36 +215,6 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryAlgorithm, ::testing::ValuesIn(registered_names(false)), test_name);
 INSTANTIATE_TEST_SUITE_P(Registry, OurOptimalProgram, ::testing::ValuesIn(registered_names(true)), test_name);
-
-// Whole fixtures (holes and all) are accepted when they are one simple ring and refused with a reason
-// otherwise, never a crash; their outer rings are simple in 41 of 59. Pinned so that a reader or
-// polygon-check change shows here.
-TEST(EarcutFixtures, AreReadOrRefusedWithAReason) {
-  std::size_t accepted = 0, holes = 0, not_simple = 0;
-  for (const auto& path : fixtures::earcut_files()) {
-    try {
-      Polygon::make(read_polygon_file(path.string()));
-      ++accepted;
-    } catch (const PolygonError& e) {
-      const std::string why = e.what();
-      holes += why == "holes are not supported";
-      not_simple += why.rfind("not simple", 0) == 0;
-      EXPECT_TRUE(why == "holes are not supported" || why.rfind("not simple", 0) == 0) << why;
-    }
-  }
-  EXPECT_EQ(accepted, 2u);  // building, hilbert
-  EXPECT_EQ(holes, 51u);
-  EXPECT_EQ(not_simple, 6u);
-  const auto rings = fixtures::earcut_outer_rings();
-  const auto simple_outer = std::count_if(rings.begin(), rings.end(), [](const auto& named) {
-    try {
-      return Polygon::make(named.second).size() >= 3;
-    } catch (const PolygonError&) {
-      return false;
-    }
-  });
-  EXPECT_EQ(simple_outer, 41);
-}
 
 }  // namespace
 }  // namespace pd

@@ -158,12 +158,15 @@ TEST_F(Cli, BadPolygonsGetOneErrorLineAndExit3) {
                "vertex 1 has a coordinate that is not finite");
   expect_error("run --algorithm ear-n2 --input " + file("junk.txt", "hello world\n").string(), 3,
                "line 1: 'hello' is not a number");
-  expect_error("run --algorithm ear-n2 --input " +
+  expect_error("run --algorithm keil --input " +
                    file("hole.wkt", "POLYGON ((0 0, 9 0, 9 9, 0 9, 0 0), (1 1, 2 1, 1 2, 1 1))").string(),
-               3, "holes are not supported");
-  expect_error("run --algorithm ear-n2 --input " +
+               3, "keil does not take polygons with holes; this one has 1 hole");
+  expect_error("run --algorithm keil --input " +
                    file("hole.json", R"({"type":"Polygon","coordinates":[[[0,0],[9,0],[0,9]],[[1,1],[2,1],[1,2]]]})").string(),
-               3, "holes are not supported");
+               3, "keil does not take polygons with holes; this one has 1 hole");
+  expect_error("run --algorithm monotone --input " +
+                   file("out.wkt", "POLYGON ((0 0, 9 0, 9 9, 0 9, 0 0), (10 1, 12 1, 10 2, 10 1))").string(),
+               3, "hole 1 is not inside the outer ring");
   expect_error("run --algorithm ear-n2 --input " + (dir_ / "missing.txt").string(), 3,
                "cannot read " + (dir_ / "missing.txt").string() + ": No such file or directory");
   expect_error("run --algorithm ear-n2 --input " + dir_.string(), 3,
@@ -178,7 +181,10 @@ TEST_F(Cli, CheckNamesAPolygonOrItsDefect) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "polygon: n=5 reflex=1 orientation=clockwise\n");
   r = cli("check --json --input " + cw.string());
-  EXPECT_EQ(r.out, "{\"n\": 5, \"reflex\": 1, \"clockwise\": true}\n");
+  EXPECT_EQ(r.out, "{\"n\": 5, \"reflex\": 1, \"clockwise\": true, \"holes\": 0, \"parts\": 1, \"merged\": 0}\n");
+  const fs::path two = file("two.wkt", "MULTIPOLYGON (((0 0, 9 0, 9 9, 0 9, 0 0), (1 1, 1 2, 2 2, 2 1, 2 1)), ((20 0, 21 0, 20 1)))");
+  EXPECT_EQ(cli("check --input " + two.string()).out,
+            "polygon: n=12 reflex=4 orientation=counter-clockwise holes=1 parts=2 merged=1\n");
   expect_error("check --input " + file("bow.txt", "0 0\n2 2\n2 0\n0 2\n").string(), 3, "not simple: edge 0-1 crosses edge 2-3");
 }
 
@@ -232,7 +238,7 @@ TEST_F(Cli, RunJsonValidAgreesWithTheIndependentCheck) {
         for (const Json& v : piece.items) c.push_back(points.at(std::stoul(v.text)));
         pieces.push_back(c);
       }
-      EXPECT_EQ(j.get("valid")->boolean, independent::tiles_once(outline, pieces, a.kind != Kind::Partition))
+      EXPECT_EQ(j.get("valid")->boolean, independent::tiles_once({outline}, pieces, a.kind != Kind::Partition))
           << a.name << " on " << family;
     }
   }
@@ -283,15 +289,18 @@ TEST_F(Cli, MaxSecondsKeepsAFinishedRunsOutput) {
 }
 
 // Every earcut fixture, whole (holes and all), through every registered algorithm within its budget:
-// a valid result, or one clean error line (exit 3 for holes and self-touching rings, refused before
-// any algorithm runs; exit 4 for a peer that fails; exit 5 and its report for a peer's invalid
-// result), never a crash, a hang or an invalid result from one of ours. The outer rings alone go through every algorithm in test_algorithms.cpp.
+// a valid result, or one clean error line (exit 3 for a polygon with a defect, refused before any
+// algorithm runs, or for holes given to an algorithm that takes none; exit 4 for a peer that fails;
+// exit 5 and its report for a peer's invalid result), never a crash, a hang or an invalid result from
+// one of ours. test_holes.cpp says which fixtures are refused and why; the outer rings alone go through
+// every algorithm in test_algorithms.cpp.
 TEST_F(Cli, EveryEarcutFixtureThroughEveryAlgorithm) {
   std::size_t refused = 0, runs = 0;
   for (const auto& path : fixtures::earcut_files()) {
     std::optional<Polygon> p;
     try {
-      p = Polygon::make(read_polygon_file(path.string()));
+      std::vector<Polygon> parts = make_parts(read_parts_file(path.string()));
+      p = std::move(parts.at(0));
     } catch (const PolygonError& e) {
       // Refused before the algorithm runs, whichever it is: each refused fixture names the next one.
       const Algorithm& a = algorithms()[refused++ % algorithms().size()];
@@ -319,8 +328,39 @@ TEST_F(Cli, EveryEarcutFixtureThroughEveryAlgorithm) {
       }
     }
   }
-  EXPECT_EQ(refused, 57u);
-  EXPECT_GT(runs, 2u);
+  EXPECT_EQ(refused, 47u);
+  EXPECT_GT(runs, 50u);
+}
+
+// A multipolygon with a hole and a repeated vertex: points in file order (the repeat included, the
+// closing vertices not), pieces in those indices (never the merged one), "parts" naming each part's
+// pieces, and the triangles of each part adding up to its area.
+TEST_F(Cli, RunReportsHolesPartsAndMergedVertices) {
+  const fs::path two = file("two.wkt", "MULTIPOLYGON (((0 0, 9 0, 9 9, 0 9, 0 0), (1 1, 1 2, 2 2, 2 1, 2 1)), ((20 0, 21 0, 20 1)))");
+  const Result r = cli("run --algorithm monotone --json --svg " + (dir_ / "two.svg").string() + " --input " + two.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json j = parse_json(r.out);
+  EXPECT_EQ(j.get("n")->text, "12");
+  EXPECT_EQ(j.get("holes")->text, "1");
+  ASSERT_EQ(j.get("points")->items.size(), 12u);
+  EXPECT_EQ(j.get("points")->items[8].items[0].text, "2");
+  ASSERT_EQ(j.get("merged")->items.size(), 1u);
+  EXPECT_EQ(j.get("merged")->items[0].items[0].text, "8");
+  EXPECT_EQ(j.get("merged")->items[0].items[1].text, "7");
+  EXPECT_EQ(j.get("piece_count")->text, "9");  // 8 + 2*1 - 2 triangles, and one
+  const auto& parts = j.get("parts")->items;
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_EQ(parts[0].items.size(), 8u);
+  ASSERT_EQ(parts[1].items.size(), 1u);
+  EXPECT_EQ(parts[1].items[0].text, "8");
+  for (const Json& piece : j.get("pieces")->items)
+    for (const Json& v : piece.items) EXPECT_NE(v.text, "8") << "a piece names the merged vertex";
+  EXPECT_TRUE(j.get("valid")->boolean);
+  EXPECT_NE(slurp(dir_ / "two.svg").find("<svg"), std::string::npos);
+  const Result text = cli("run --algorithm monotone --input " + two.string());
+  EXPECT_EQ(text.out.rfind("monotone: n=12 reflex=4 holes=1 parts=2 pieces=9 steiner=0 valid=yes", 0), 0u) << text.out;
+  expect_error("run --algorithm keil --input " + two.string(), 3, "part 0: keil does not take polygons with holes; this one has 1 hole");
+  expect_error("cut --input " + two.string(), 3, "cut takes a polygon without holes: the polygon-cutting theorem is for simple polygons");
 }
 
 TEST_F(Cli, SvgIsWritten) {

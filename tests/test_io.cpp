@@ -9,11 +9,26 @@ namespace {
 
 std::string error_of(const std::string& text) {
   try {
-    parse_polygon(text);
+    make_parts(parse_parts(text));
   } catch (const PolygonError& e) {
     return e.what();
   }
   return "accepted";
+}
+
+// The one ring of a text holding one part without holes.
+std::vector<Point> parse_polygon(const std::string& text) {
+  const std::vector<Rings> parts = parse_parts(text);
+  EXPECT_EQ(parts.size(), 1u);
+  EXPECT_EQ(parts.at(0).size(), 1u);
+  return parts.at(0).at(0);
+}
+
+// How many rings each part has.
+std::vector<std::size_t> ring_counts(const std::string& text) {
+  std::vector<std::size_t> counts;
+  for (const Rings& part : parse_parts(text)) counts.push_back(part.size());
+  return counts;
 }
 
 const std::vector<Point> kTriangle = {{0, 0}, {4, 0}, {0, 3}};
@@ -100,20 +115,24 @@ TEST(Readers, NumbersThatAreExactlyDoublesAreRead) {
 }
 
 // A ring that stops being packable (here a 3-D position after 2-D ones) is unpacked into numbers whose
-// text reads back as the same doubles, 2^60 included: the refusal names the real defect.
+// text reads back as the same doubles, 2^60 included; an altitude is dropped.
 TEST(Readers, UnpackedPositionsKeepTheirValues) {
-  EXPECT_EQ(error_of("[[1152921504606846976,0],[1,0],[0,1,5]]"),
-            "GeoJSON: positions with more than 2 coordinates are not supported");
+  const std::vector<Point> ring = parse_polygon("[[1152921504606846976,0],[1,0],[0,1,5]]");
+  EXPECT_EQ(ring, (std::vector<Point>{{1152921504606846976.0, 0}, {1, 0}, {0, 1}}));
+  EXPECT_EQ(parse_polygon("[[0,0,7],[4,0,7],[0,3,7]]"), kTriangle);
+  EXPECT_EQ(parse_polygon(R"({"type":"Polygon","coordinates":[[[0,0,1,2],[4,0,1,2],[0,3,1,2]]]})"), kTriangle);
+  EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0,"z"],[4,0],[0,3]]]})"), "GeoJSON: a coordinate is not a number");
 }
 
 TEST(Readers, Wkt) {
   EXPECT_EQ(parse_polygon("POLYGON ((0 0, 4 0, 0 3, 0 0))").size(), 4u);
   EXPECT_EQ(parse_polygon("polygon((0 0,4 0,0 3))"), kTriangle);
-  EXPECT_EQ(error_of("POLYGON ((0 0, 4 0, 0 3), (1 1, 2 1, 1 2))"), "holes are not supported");
+  EXPECT_EQ(ring_counts("POLYGON ((0 0, 9 0, 0 9), (1 1, 1 2, 2 1))"), std::vector<std::size_t>{2});
   EXPECT_EQ(error_of("POLYGON EMPTY"), "the polygon is empty");
   EXPECT_EQ(error_of("POLYGON ((0 0, 4 0, 0 a))"), "WKT: 'a' is not a number");
   EXPECT_EQ(error_of("POLYGON ((0 0, 4 0, 0 3)"), "WKT: expected ')' at offset 24, found the end");
-  EXPECT_EQ(error_of("MULTIPOLYGON (((0 0, 1 0, 0 1)), ((5 5, 6 5, 5 6)))"), "multipolygons are not supported");
+  EXPECT_EQ(ring_counts("MULTIPOLYGON (((0 0, 1 0, 0 1)), ((5 5, 6 5, 5 6), (5.1 5.1, 5.1 5.2, 5.2 5.1)))"),
+            (std::vector<std::size_t>{1, 2}));
   EXPECT_EQ(parse_polygon("MULTIPOLYGON (((0 0, 4 0, 0 3)))"), kTriangle);  // one part, as ogr2ogr writes
 }
 
@@ -126,7 +145,23 @@ TEST(Readers, WktIsReadByItsGrammar) {
   EXPECT_EQ(error_of("POLYGON ((0 0, 1 0, 0))"), "WKT: expected a coordinate at offset 21, found '))'");
   EXPECT_EQ(error_of("POLYGON ((0 0, 1 0, 0 1 2))"), "WKT: expected ')' at offset 24, found '2))'");
   EXPECT_EQ(error_of("POLYGON ((0 0, 1 0, 0 1)) x"), "WKT: unexpected text after the polygon at offset 26, found 'x'");
-  EXPECT_EQ(error_of("POLYGON Z ((0 0 0, 1 0 0, 0 1 0))"), "WKT with Z or M coordinates is not supported");
+}
+
+// EWKT's SRID prefix is skipped; Z and M values are read and dropped, as many as the tag (or, without
+// one, the first point) says each point has.
+TEST(Readers, WktDimensionsAndSrid) {
+  EXPECT_EQ(parse_polygon("POLYGON Z ((0 0 1, 4 0 1, 0 3 1))"), kTriangle);
+  EXPECT_EQ(parse_polygon("POLYGON M ((0 0 1, 4 0 1, 0 3 1))"), kTriangle);
+  EXPECT_EQ(parse_polygon("POLYGON ZM ((0 0 1 2, 4 0 1 2, 0 3 1 2))"), kTriangle);
+  EXPECT_EQ(parse_polygon("POLYGON ((0 0 1, 4 0 1, 0 3 1))"), kTriangle);
+  EXPECT_EQ(parse_polygon("SRID=4326;POLYGON((0 0,4 0,0 3))"), kTriangle);
+  EXPECT_EQ(parse_polygon("srid=4326; MULTIPOLYGON Z (((0 0 5, 4 0 5, 0 3 5)))"), kTriangle);
+  EXPECT_EQ(error_of("POLYGON Z ((0 0, 4 0, 0 3))"), "WKT: expected 3 coordinates in each point at offset 15, found ', 4 0, 0 3))'");
+  EXPECT_EQ(error_of("POLYGON ((0 0, 4 0 1, 0 3))"), "WKT: expected ')' at offset 19, found '1, 0 3))'");
+  EXPECT_EQ(error_of("POLYGON ZM ((0 0 1, 4 0 1, 0 3 1))"), "WKT: expected 4 coordinates in each point at offset 18, found ', 4 0 1, 0 3 1))'");
+  EXPECT_EQ(error_of("POLYGON ((0 0 1 2 3, 4 0, 0 3))"), "WKT: expected ')' at offset 18, found '3, 4 0, 0 3))'");
+  EXPECT_EQ(error_of("SRID=4326 POLYGON((0 0,4 0,0 3))"), "WKT: expected ';' after SRID= at offset 0, found 'SRID=4326 POLYGON((0'");
+  EXPECT_EQ(error_of("POLYGON Z ((0 0 nan, 4 0 1, 0 3 1))"), "accepted");  // a Z value is dropped, whatever it is
 }
 
 // A Feature's geometry is a geometry; a FeatureCollection holds Features; JSON's own grammar (no
@@ -141,8 +176,8 @@ TEST(Readers, GeoJsonIsReadByItsGrammar) {
             "GeoJSON: a FeatureCollection's features must be Features");
   EXPECT_EQ(error_of(R"({"type":"Feature","geometry":null})"), "GeoJSON: the Feature has no geometry");
   EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0],[4,0],[0,3],]]})").rfind("JSON: syntax error", 0), 0u);
-  EXPECT_EQ(error_of(R"({"type":"MultiPolygon","coordinates":[[[[0,0],[4,0],[0,3]]],[[[5,5],[6,5],[5,6]]]]})"),
-            "multipolygons are not supported");
+  EXPECT_EQ(ring_counts(R"({"type":"MultiPolygon","coordinates":[[[[0,0],[4,0],[0,3]]],[[[5,5],[6,5],[5,6]]]]})"),
+            (std::vector<std::size_t>{1, 1}));
 }
 
 TEST(Readers, GeoJson) {
@@ -150,8 +185,9 @@ TEST(Readers, GeoJson) {
   EXPECT_EQ(parse_polygon(poly).size(), 4u);
   EXPECT_EQ(parse_polygon(R"({"type":"Feature","properties":{},"geometry":)" + poly + "}").size(), 4u);
   EXPECT_EQ(parse_polygon("[[[0,0],[4,0],[0,3]]]"), kTriangle);  // earcut's array of rings
-  EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0],[4,0],[0,3]],[[1,1],[2,1],[1,2]]]})"),
-            "holes are not supported");
+  EXPECT_EQ(ring_counts(R"({"type":"Polygon","coordinates":[[[0,0],[9,0],[0,9]],[[1,1],[1,2],[2,1]]]})"),
+            std::vector<std::size_t>{2});
+  EXPECT_EQ(ring_counts("[[[0,0],[9,0],[0,9]],[[1,1],[1,2],[2,1]]]"), std::vector<std::size_t>{2});  // earcut's rings
   EXPECT_EQ(error_of(R"({"type":"Point","coordinates":[0,0]})"), "GeoJSON: a 'Point' is not a Polygon or MultiPolygon");
   EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[]})"), "the polygon is empty");
   EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0],[4,"a"],[0,3]]]})"),
@@ -168,7 +204,7 @@ TEST(Readers, NonFiniteNumbersReachThePolygonCheck) {
 TEST(Writers, FormatsRoundTrip) {
   const std::vector<Point> ring = {{0, 0}, {0.1, 0}, {1e-300, 3}, {1.2345678901234568e20, -1152921504606846976.0}};
   for (Format f : {Format::Txt, Format::Wkt, Format::GeoJson}) {
-    auto back = parse_polygon(format_polygon(ring, f));
+    auto back = parse_polygon(format_polygon({ring}, f));
     if (back.size() == ring.size() + 1) back.pop_back();  // WKT and GeoJSON close the ring
     EXPECT_EQ(back, ring);
   }
@@ -185,7 +221,7 @@ TEST(Writers, RunJsonFollowsTheContract) {
   d.add_cut(3, s);
   const auto pieces = pieces_of(p, d);
   const Counters counters{{"tests", 7}};
-  const std::string text = run_json({"demo", &p, &d, &pieces, true, 0.25, &counters});
+  const std::string text = run_json({"demo", {{&p, &d, &pieces}}, true, 0.25, &counters});
   const Json j = parse_json(text);
   EXPECT_EQ(j.get("algorithm")->text, "demo");
   EXPECT_EQ(j.get("n")->text, "4");
@@ -218,7 +254,8 @@ TEST(Writers, SvgMarksPiecesReflexVerticesAndSteinerPoints) {
   Decomposition d;
   const VertexId s = 6 + d.add_steiner(QPoint(2, 0), 0);
   d.add_cut(3, s);
-  const std::string svg = run_svg(p, d, pieces_of(p, d), "naive");
+  const std::vector<Piece> pieces = pieces_of(p, d);
+  const std::string svg = run_svg({{&p, &d, &pieces}}, "naive");
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("reflex 3"), std::string::npos);
   EXPECT_NE(svg.find("Steiner 6"), std::string::npos);

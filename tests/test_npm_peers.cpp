@@ -125,6 +125,20 @@ TEST_F(NpmPeers, EarcutIsValidWithNMinus2Triangles) {
   }
 }
 
+// Holes reach earcut as its hole indices, numbered as polydecomp numbers them: a square with two holes
+// (one given counter-clockwise) is n + 2h - 2 = 14 valid triangles; poly-decomp, which takes no holes,
+// is refused before it runs.
+TEST_F(NpmPeers, EarcutTakesHoles) {
+  const fs::path holes = polygon("holes.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10), (2 2, 2 4, 4 4, 4 2), (6 6, 8 6, 8 8, 6 8))");
+  const Json j = run_on("earcut", holes);
+  ASSERT_NE(j.get("valid"), nullptr);
+  EXPECT_TRUE(j.get("valid")->boolean);
+  EXPECT_EQ(j.get("piece_count")->text, "14");
+  const Result refused = run(PD_CLI, "run --algorithm poly-decomp-quick --input " + holes.string());
+  EXPECT_EQ(refused.status, 3);
+  EXPECT_EQ(refused.err, "error: poly-decomp-quick does not take polygons with holes; this one has 2 holes\n");
+}
+
 // quickDecomp answers every polygon; valid or not is recorded (RecordProperty "verdicts"), not
 // asserted. A valid answer keeps its claimed bound of r+1 pieces.
 TEST_F(NpmPeers, PolyDecompQuickAnswersEveryPolygon) {

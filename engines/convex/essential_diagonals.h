@@ -3,17 +3,21 @@
 // diagonal in turn is removed unless that would make a reflex angle at one of its ends (Keil-Snoeyink
 // (001), Sec. 2). Removing a diagonal only widens angles, so a diagonal kept stays essential, and at
 // the end every diagonal is essential: a reflex vertex is essential for at most two of them, so at
-// most 2r are left, at most 2r + 1 pieces, at most 4 OPT (OPT >= ceil(r/2) + 1).
+// most 2r are left, at most 2r + 1 - h pieces for h holes, at most 4 OPT (OPT >= ceil(r/2) + 1 without
+// holes). With holes the pieces stay simple: a face with convex angles only is convex, so no removal
+// can leave one wrapped round a hole.
 //
 // O(n + k) for k diagonals: every vertex's edges in counter-clockwise order as a doubly linked list,
 // so that the angle a removal would make at a vertex is read from the diagonal's two neighbours and a
-// removal is O(1). The lists are built without geometric sorting: around a vertex the diagonals come
-// in the order of their other ends along the boundary (Keil-Snoeyink, Observation 1), so two counting
-// sorts by integer keys order all of them.
+// removal is O(1). Without holes the lists are built without geometric sorting: around a vertex the
+// diagonals come in the order of their other ends along the boundary (Keil-Snoeyink, Observation 1),
+// so two counting sorts by integer keys order all of them. With holes that order fails (a diagonal may
+// end on another ring), and each vertex's diagonals are sorted by angle: O(n + k log k).
 #pragma once
 
 #include "core/decomposition.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -31,7 +35,8 @@ class Rotations {
     for (std::size_t k = 0; k < diagonals.size(); ++k) set_edge(2 * k, diagonals[k].a, diagonals[k].b);
     const std::size_t m = diagonals.size();
     for (std::size_t u = 0; u < n_; ++u) set_edge(2 * (m + u), static_cast<VertexId>(u), static_cast<VertexId>(p.next(u)));
-    link_in_boundary_order();
+    if (p.hole_count() == 0) link_in_boundary_order();
+    else link_by_angle(p, m);
   }
 
   VertexId origin(std::size_t h) const { return origin_[h]; }
@@ -62,6 +67,31 @@ class Rotations {
     all = counting_sort(all, [&](std::size_t h) { return origin_[h]; });
     for (std::size_t k = 0; k + 1 < all.size(); ++k)
       if (origin_[all[k]] == origin_[all[k + 1]]) ccw_[all[k]] = all[k + 1], cw_[all[k + 1]] = all[k];
+  }
+
+  // Around u, counter-clockwise: the edge to next(u), the diagonals by angle, the edge to prev(u).
+  void link_by_angle(const Polygon& p, std::size_t m) {
+    std::vector<std::uint32_t> all(origin_.size());
+    for (std::size_t h = 0; h < all.size(); ++h) all[h] = static_cast<std::uint32_t>(h);
+    all = counting_sort(all, [&](std::size_t h) { return origin_[h]; });
+    for (std::size_t from = 0, to = 0; from < all.size(); from = to) {
+      for (to = from; to < all.size() && origin_[all[to]] == origin_[all[from]]; ++to) {
+      }
+      const VertexId u = origin_[all[from]];
+      const Point &centre = p[u], &ray = p[p.next(u)];
+      auto rank = [&](std::uint32_t h) {  // 0: the edge to next(u), 1: a diagonal, 2: the edge to prev(u)
+        if (h >= 2 * m) return h == 2 * (m + u) ? 0 : 2;
+        return 1;
+      };
+      auto half = [&](std::uint32_t h) { return orient(centre, ray, p[target_[h]]) > 0 ? 0 : 1; };
+      std::sort(all.begin() + static_cast<std::ptrdiff_t>(from), all.begin() + static_cast<std::ptrdiff_t>(to),
+                [&](std::uint32_t a, std::uint32_t b) {
+                  if (rank(a) != rank(b)) return rank(a) < rank(b);
+                  if (half(a) != half(b)) return half(a) < half(b);
+                  return orient(centre, p[target_[a]], p[target_[b]]) > 0;
+                });
+      for (std::size_t k = from; k + 1 < to; ++k) ccw_[all[k]] = all[k + 1], cw_[all[k + 1]] = all[k];
+    }
   }
 
   template <class Key>
