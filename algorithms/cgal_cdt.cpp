@@ -69,7 +69,7 @@ Decomposition cgal_cdt(const Polygon& p, Counters& counters) {
 }  // namespace
 
 REGISTER_ALGORITHM({.name = "cgal-cdt", .kind = Kind::Triangulation, .time_bound = "n*log(n)",
-                    .pieces_bound = "== n-2",
+                    .pieces_bound = "== n+2*h-2",
                     .source = "CGAL 5.5 Constrained_Delaunay_triangulation_2, inside faces",
                     .peer = "CGAL 5.5", .accepts = {.holes = true}, .run = cgal_cdt});
 

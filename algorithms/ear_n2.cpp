@@ -130,7 +130,7 @@ Decomposition ear_n2(const Polygon& p, Counters& counters) {
 }  // namespace
 
 REGISTER_ALGORITHM({.name = "ear-n2", .kind = Kind::Triangulation, .time_bound = "n^2",
-                    .pieces_bound = "== n-2",
+                    .pieces_bound = "== n+2*h-2",
                     .source = "Rosen slides (003), ear clipping with ear-status updates; Eberly 2008 bridges for holes",
                     .accepts = {.holes = true}, .size_ceiling = 20000, .run = ear_n2});
 

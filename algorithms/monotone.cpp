@@ -13,7 +13,7 @@
 namespace pd {
 
 REGISTER_ALGORITHM({.name = "monotone", .kind = Kind::Triangulation, .time_bound = "n*log(n)",
-                    .pieces_bound = "== n-2",
+                    .pieces_bound = "== n+2*h-2",
                     .source = "Rosen slides (003), monotone partition + monotone triangulation; de Berg et al. 3.2-3.3",
                     .accepts = {.holes = true}, .run = triangulate_monotone});
 

@@ -23,7 +23,7 @@ Decomposition y_monotone(const Polygon& p, Counters& counters) {
 }  // namespace
 
 REGISTER_ALGORITHM({.name = "y-monotone", .kind = Kind::Partition, .time_bound = "n*log(n)",
-                    .pieces_bound = "<= r+1",
+                    .pieces_bound = "<= r+1-h",
                     .source = "de Berg et al. Sec. 3.2 (MakeMonotone); Rosen slides (003), monotone partitioning",
                     .accepts = {.holes = true}, .run = y_monotone});
 

@@ -9,17 +9,23 @@ namespace pd {
 namespace {
 
 // A family's output must be what family.h promises; a violation is a bug in the family.
-void check_output(const Family& f, std::size_t n, const std::vector<Point>& polygon) {
-  if (polygon.size() != n) {
-    throw std::logic_error("family " + f.name + " made " + std::to_string(polygon.size()) +
-                           " vertices instead of " + std::to_string(n));
+void check_output(const std::string& family, std::size_t n, const Rings& rings) {
+  std::size_t vertices = 0;
+  for (const Ring& ring : rings) vertices += ring.size();
+  if (vertices != n) {
+    throw std::logic_error("family " + family + " made " + std::to_string(vertices) + " vertices instead of " +
+                           std::to_string(n));
   }
   constexpr double kBound = 2147483648.0;  // 2^31
-  for (const Point& p : polygon) {
-    if (!(std::abs(p.x()) < kBound && std::abs(p.y()) < kBound)) {
-      throw std::logic_error("family " + f.name + " made a coordinate beyond 2^31 at n=" + std::to_string(n));
-    }
-  }
+  for (const Ring& ring : rings)
+    for (const Point& p : ring)
+      if (!(std::abs(p.x()) < kBound && std::abs(p.y()) < kBound))
+        throw std::logic_error("family " + family + " made a coordinate beyond 2^31 at n=" + std::to_string(n));
+}
+
+std::string all_family_names() {
+  std::string names = NamedRegistry<Family>::names(), holed = NamedRegistry<HoleFamily>::names();
+  return holed.empty() ? names : names + ", " + holed;
 }
 
 }  // namespace
@@ -38,20 +44,65 @@ const std::vector<Family>& families() { return NamedRegistry<Family>::all(); }
 
 const Family* find_family(const std::string& name) { return NamedRegistry<Family>::find(name); }
 
-bool register_family(Family f) { return NamedRegistry<Family>::add(std::move(f)); }
+bool register_family(Family f) {
+  if (find_hole_family(f.name)) throw std::logic_error("registered twice: " + f.name);
+  return NamedRegistry<Family>::add(std::move(f));
+}
 
 std::vector<Point> generate(const std::string& family, std::size_t n, std::optional<std::size_t> r,
                             std::uint64_t seed) {
   const Family* f = find_family(family);
-  if (f == nullptr) throw std::invalid_argument("unknown family " + family + "; families: " + NamedRegistry<Family>::names());
+  if (f == nullptr) {
+    if (find_hole_family(family))
+      throw std::invalid_argument("family " + family + " makes polygons with holes");
+    throw std::invalid_argument("unknown family " + family + "; families: " + all_family_names());
+  }
   const std::size_t reflex = r ? *r : f->default_reflex(n);
   if (f->infeasible(n, reflex)) {
     throw GeneratorError("family " + f->name + " cannot make n=" + std::to_string(n) +
                          ", r=" + std::to_string(reflex) + ": feasible " + f->range());
   }
   std::vector<Point> polygon = f->make(n, reflex, seed);
-  check_output(*f, n, polygon);
+  check_output(f->name, n, {polygon});
   return polygon;
+}
+
+std::string HoleFamily::range() const {
+  return std::to_string(min_n) + " <= n <= " + std::to_string(max_n) + ", " + rh_range;
+}
+
+std::optional<std::string> HoleFamily::infeasible(std::size_t n, std::size_t r, std::size_t h) const {
+  if (n < min_n) return "n must be at least " + std::to_string(min_n);
+  if (n > max_n) return "n must be at most " + std::to_string(max_n);
+  return rh_infeasible(n, r, h);
+}
+
+const std::vector<HoleFamily>& hole_families() { return NamedRegistry<HoleFamily>::all(); }
+
+const HoleFamily* find_hole_family(const std::string& name) { return NamedRegistry<HoleFamily>::find(name); }
+
+bool register_hole_family(HoleFamily f) {
+  if (find_family(f.name)) throw std::logic_error("registered twice: " + f.name);
+  return NamedRegistry<HoleFamily>::add(std::move(f));
+}
+
+Rings generate_with_holes(const std::string& family, std::size_t n, std::optional<std::size_t> r,
+                          std::optional<std::size_t> h, std::uint64_t seed) {
+  const HoleFamily* f = find_hole_family(family);
+  if (f == nullptr) {
+    if (h.value_or(0) == 0 && find_family(family)) return {generate(family, n, r, seed)};
+    if (find_family(family)) throw GeneratorError("family " + family + " makes polygons without holes (h = 0)");
+    throw std::invalid_argument("unknown family " + family + "; families: " + all_family_names());
+  }
+  const std::size_t holes = h.value_or(f->default_holes);
+  const std::size_t reflex = r ? *r : f->default_reflex(n, holes);
+  if (f->infeasible(n, reflex, holes)) {
+    throw GeneratorError("family " + f->name + " cannot make n=" + std::to_string(n) + ", r=" + std::to_string(reflex) +
+                         ", h=" + std::to_string(holes) + ": feasible " + f->range());
+  }
+  Rings rings = f->make(n, reflex, holes, seed);
+  check_output(f->name, n, rings);
+  return rings;
 }
 
 }  // namespace pd

@@ -8,6 +8,7 @@
 
 #include "core/geometry.h"
 #include "core/named_registry.h"
+#include "core/polygon.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -53,7 +54,39 @@ bool register_family(Family f);
 std::vector<Point> generate(const std::string& family, std::size_t n, std::optional<std::size_t> r,
                             std::uint64_t seed);
 
+// A family of polygons with holes: n vertices in all (the outer ring's and the holes'), r reflex
+// vertices and h holes, exactly, where the family can realise them; the outer ring counter-clockwise,
+// the holes clockwise, integer coordinates (|x|, |y| < 2^31), the same bytes on every machine. Its
+// sweep keys carry h: "family/n:N/r:R/h:H/seed:S". A family file registers itself with
+// REGISTER_HOLE_FAMILY; the names are shared with the families above.
+struct HoleFamily {
+  std::string name;
+  std::string shape;    // one sentence: what the polygons look like
+  std::size_t min_n;    // the feasible n: min_n <= n <= max_n
+  std::size_t max_n;
+  std::string rh_range;  // the feasible (r, h) at a feasible n, in words
+  // Why (r, h) cannot be realised at an n in range, or nothing when it can.
+  std::function<std::optional<std::string>(std::size_t n, std::size_t r, std::size_t h)> rh_infeasible;
+  // The r used when none is asked for, at (n, h).
+  std::function<std::size_t(std::size_t n, std::size_t h)> default_reflex;
+  std::size_t default_holes;  // the h used when none is asked for
+  std::function<Rings(std::size_t n, std::size_t r, std::size_t h, std::uint64_t seed)> make;
+
+  std::string range() const;
+  std::optional<std::string> infeasible(std::size_t n, std::size_t r, std::size_t h) const;
+};
+
+const std::vector<HoleFamily>& hole_families();  // sorted by name
+const HoleFamily* find_hole_family(const std::string& name);
+bool register_hole_family(HoleFamily f);
+
+// Makes a polygon with holes of `family`; r and h default to the family's. Throws as generate does.
+Rings generate_with_holes(const std::string& family, std::size_t n, std::optional<std::size_t> r,
+                          std::optional<std::size_t> h, std::uint64_t seed);
+
 }  // namespace pd
 
 #define REGISTER_FAMILY(...) \
   static const bool PD_CONCAT(pd_family_, __COUNTER__) = ::pd::register_family(__VA_ARGS__)
+#define REGISTER_HOLE_FAMILY(...) \
+  static const bool PD_CONCAT(pd_hole_family_, __COUNTER__) = ::pd::register_hole_family(__VA_ARGS__)

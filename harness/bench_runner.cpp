@@ -63,6 +63,10 @@ JsonLine benchmark_context(const benchmark::BenchmarkReporter::Context& c) {
   return line;
 }
 
+// The budget predicts a key from the keys of its family it dominates in n and r; with holes, from
+// those with as many holes.
+std::string budget_family(const SweepPolygon& p) { return p.h ? p.family + "/h:" + std::to_string(*p.h) : p.family; }
+
 }  // namespace
 
 SweepRunner::SweepRunner(const Sweep& sweep, Journal& journal, Progress& progress, Context context)
@@ -97,16 +101,16 @@ void SweepRunner::register_key(const SweepKey& key) {
 void SweepRunner::learn(const SweepKey& key, const std::string& status, const std::string& error_message,
                         double seconds) {
   const SweepPolygon& p = *key.polygon;
-  if (status == "ok" || status == "invalid") budget_.record_time(*key.algorithm, p.family, p.n, p.r, seconds);
+  if (status == "ok" || status == "invalid") budget_.record_time(*key.algorithm, budget_family(p), p.n, p.r, seconds);
   if (starts_with(error_message, "skipped (budget)") || starts_with(error_message, "skipped (timeout)"))
-    budget_.record_over_budget(*key.algorithm, p.family, p.n, p.r);
+    budget_.record_over_budget(*key.algorithm, budget_family(p), p.n, p.r);
 }
 
 const SweepRunner::CachedPolygon& SweepRunner::polygon_for(const SweepPolygon& p) {
   if (cache_.id == p.id()) return cache_;
   cache_ = CachedPolygon{p.id(), std::nullopt, 0, ""};
   try {
-    cache_.polygon = Polygon::make(generate(p.family, p.n, p.r, p.seed));
+    cache_.polygon = Polygon::make_with_holes(generate_with_holes(p.family, p.n, p.r, p.h, p.seed));
     cache_.reflex = cache_.polygon->reflex_count();
   } catch (const std::exception& e) {
     cache_.error = std::string("failed: generator: ") + e.what();
@@ -116,7 +120,7 @@ const SweepRunner::CachedPolygon& SweepRunner::polygon_for(const SweepPolygon& p
 
 void SweepRunner::run_key(benchmark::State& state, const SweepKey& key) {
   const SweepPolygon& sp = *key.polygon;
-  if (const auto why = budget_.skip_reason(*key.algorithm, sp.family, sp.n, sp.r)) {
+  if (const auto why = budget_.skip_reason(*key.algorithm, budget_family(sp), sp.n, sp.r)) {
     state.SkipWithError(why->c_str());
     return;
   }
@@ -199,7 +203,10 @@ void SweepRunner::set_counters(benchmark::State& state, const CachedPolygon& p) 
   state.counters["r"] = r;
   state.counters["pieces"] = static_cast<double>(current_.pieces);
   state.counters["steiner"] = static_cast<double>(current_.steiner);
-  state.counters["lower_bound"] = static_cast<double>((p.reflex + 1) / 2 + 1);
+  // ceil(r/2) + 1 - h, at least 1: every convex decomposition's (docs/holes.md).
+  const std::size_t holes = p.polygon->hole_count(), bound = (p.reflex + 1) / 2 + 1;
+  state.counters["lower_bound"] = static_cast<double>(bound > holes ? bound - holes : 1);
+  if (holes > 0) state.counters["h"] = static_cast<double>(holes);
   state.counters["valid"] = current_.valid ? 1 : 0;
   for (const auto& [name, count] : current_.ops) state.counters["op_" + name] = static_cast<double>(count);
 }

@@ -78,7 +78,7 @@ void validate(boost::any& v, const std::vector<std::string>& values, Count*, int
 
 const char* kUsageText =
     "usage: polydecomp list [--json | --markdown] [--plugins DIR]...\n"
-    "       polydecomp generate --family F --n N [--reflex R] [--seed S] [--format txt|wkt|geojson] [-o FILE]\n"
+    "       polydecomp generate --family F --n N [--reflex R] [--holes H] [--seed S] [--format txt|wkt|geojson] [-o FILE]\n"
     "       polydecomp run --algorithm A --input FILE|- [--json] [--svg FILE] [--no-validate] [--max-seconds S]\n"
     "                      [--max-memory SIZE] [--plugins DIR]...\n"
     "       polydecomp cut --input FILE [--weights reflex|all|FILE] [--vertical] [--json]\n"
@@ -246,7 +246,7 @@ int cmd_generate(const std::vector<std::string>& args) {
   po::options_description opts;
   opts.add_options()("family", po::value<std::string>()->required(), "family")(
       "n", po::value<Count>()->required(), "vertices")("reflex", po::value<Count>(), "reflex vertices")(
-      "seed", po::value<Count>()->default_value(Count{1}, "1"), "seed")(
+      "holes", po::value<Count>(), "holes (families with holes)")("seed", po::value<Count>()->default_value(Count{1}, "1"), "seed")(
       "format", po::value<std::string>()->default_value("txt"), "txt|wkt|geojson")(
       "output,o", po::value<std::string>()->default_value(""), "file")("help,h", "this help");
   const auto vm = parse("generate", args, opts);
@@ -256,15 +256,19 @@ int cmd_generate(const std::vector<std::string>& args) {
   } catch (const std::invalid_argument& e) {
     usage(e.what());
   }
-  std::optional<std::size_t> reflex;
+  std::optional<std::size_t> reflex, holes;
   if (vm.count("reflex")) reflex = vm["reflex"].as<Count>().value;
-  std::vector<Point> ring;
+  if (vm.count("holes")) holes = vm["holes"].as<Count>().value;
+  const std::string family = vm["family"].as<std::string>();
+  Rings rings;
   try {
-    ring = generate(vm["family"].as<std::string>(), vm["n"].as<Count>().value, reflex, vm["seed"].as<Count>().value);
+    rings = generate_with_holes(family, vm["n"].as<Count>().value, reflex, holes, vm["seed"].as<Count>().value);
   } catch (const std::invalid_argument& e) {
     usage(e.what());
   }
-  emit(format_polygon({ring}, format), vm["output"].as<std::string>());
+  if (rings.size() > 1 && format == Format::Txt)
+    usage("family " + family + " makes polygons with holes, which plain text cannot hold: add --format wkt or --format geojson");
+  emit(format_polygon(rings, format), vm["output"].as<std::string>());
   return 0;
 }
 

@@ -85,25 +85,36 @@ void check_rule(const std::string& rule, const std::string& where) {
     throw SweepError(where + ": bad reflex rule \"" + rule + "\" (a number, \"default\", \"n/K\" or \"P*n/K\")");
 }
 
-std::size_t resolve_reflex(const std::string& rule, const Family& family, std::size_t n) {
-  if (rule == "default") return family.default_reflex(n);
+std::size_t resolve_reflex(const std::string& rule, std::size_t family_default, std::size_t n) {
+  if (rule == "default") return family_default;
   std::size_t p, k;
   if (parse_fraction(rule, p, k)) return n * p / k;
   return std::stoul(rule);
 }
 
-std::vector<std::string> select_families(const Json& v, const std::string& where) {
+// The curve's families, and whether they are the families with holes (a curve holds one kind).
+std::vector<std::string> select_families(const Json& v, const std::string& where, bool& with_holes) {
   std::vector<std::string> names;
+  with_holes = v.type == Json::Type::String && v.text == "holes";
+  if (with_holes) {
+    for (const HoleFamily& f : hole_families()) names.push_back(f.name);
+    return names;
+  }
   if (v.type == Json::Type::String && (v.text == "all" || v.text == "controls_r")) {
     for (const Family& f : families())
       if (v.text == "all" || f.controls_r) names.push_back(f.name);
     return names;
   }
+  std::size_t holed = 0;
   for (const Json* item : array_items(v, where + " families")) {
-    if (item->type != Json::Type::String || !find_family(item->text))
-      throw SweepError(where + ": unknown family " + (item->type == Json::Type::String ? item->text : "?"));
+    const bool known = item->type == Json::Type::String && (find_family(item->text) || find_hole_family(item->text));
+    if (!known) throw SweepError(where + ": unknown family " + (item->type == Json::Type::String ? item->text : "?"));
     names.push_back(item->text);
+    holed += find_hole_family(item->text) != nullptr;
   }
+  if (holed != 0 && holed != names.size())
+    throw SweepError(where + ": a curve holds families with holes or families without, not both");
+  with_holes = holed != 0;
   return names;
 }
 
@@ -134,12 +145,15 @@ std::vector<std::string> select_algorithms(const Json* v, const std::string& whe
 }
 
 // One entry of "curves": {"vs": "n", "n": [...], "r": [rules]} is one curve per rule;
-// {"vs": "r", "n": [...], "r": [rules]} is one curve per n.
+// {"vs": "r", "n": [...], "r": [rules]} is one curve per n. For the families with holes "h": [...]
+// is required: "vs": "n" and "vs": "r" give one curve per h as well, and {"vs": "h", "n": [...],
+// "r": [rules], "h": [...]} one curve per n and rule.
 std::vector<Sweep::Curve> expand_curves(const Json& entry, const std::string& where) {
   const Json& vs = member(entry, "vs", where);
-  if (vs.type != Json::Type::String || (vs.text != "n" && vs.text != "r"))
-    throw SweepError(where + ": \"vs\" must be \"n\" or \"r\"");
-  const auto families = select_families(member(entry, "families", where), where);
+  if (vs.type != Json::Type::String || (vs.text != "n" && vs.text != "r" && vs.text != "h"))
+    throw SweepError(where + ": \"vs\" must be \"n\", \"r\" or \"h\"");
+  bool with_holes = false;
+  const auto families = select_families(member(entry, "families", where), where, with_holes);
   std::vector<std::size_t> ns;
   for (const Json* v : array_items(member(entry, "n", where), where + " n")) ns.push_back(count_of(*v, where + " n"));
   std::vector<std::string> rules;
@@ -147,19 +161,38 @@ std::vector<Sweep::Curve> expand_curves(const Json& entry, const std::string& wh
     rules.push_back(rule_text(*v, where + " r"));
     check_rule(rules.back(), where);
   }
+  std::vector<std::optional<std::size_t>> hs{std::nullopt};
+  if (with_holes) {
+    hs.clear();
+    for (const Json* v : array_items(member(entry, "h", where), where + " h")) hs.push_back(count_of(*v, where + " h"));
+  } else if (entry.get("h") || vs.text == "h") {
+    throw SweepError(where + ": \"h\" is for the families with holes (\"families\": \"holes\")");
+  }
+  const auto with_h = [](const std::string& label, std::optional<std::size_t> h) {
+    return h ? label + " h=" + std::to_string(*h) : label;
+  };
   std::vector<Sweep::Curve> curves;
   if (vs.text == "n") {
-    for (const std::string& rule : rules) {
-      Sweep::Curve c{"vs-n r=" + rule, families, {}};
-      for (std::size_t n : ns) c.points.emplace_back(n, rule);
-      curves.push_back(std::move(c));
-    }
+    for (const auto& h : hs)
+      for (const std::string& rule : rules) {
+        Sweep::Curve c{with_h("vs-n r=" + rule, h), families, {}};
+        for (std::size_t n : ns) c.points.push_back({n, rule, h});
+        curves.push_back(std::move(c));
+      }
+  } else if (vs.text == "r") {
+    for (const auto& h : hs)
+      for (std::size_t n : ns) {
+        Sweep::Curve c{with_h("vs-r n=" + std::to_string(n), h), families, {}};
+        for (const std::string& rule : rules) c.points.push_back({n, rule, h});
+        curves.push_back(std::move(c));
+      }
   } else {
-    for (std::size_t n : ns) {
-      Sweep::Curve c{"vs-r n=" + std::to_string(n), families, {}};
-      for (const std::string& rule : rules) c.points.emplace_back(n, rule);
-      curves.push_back(std::move(c));
-    }
+    for (std::size_t n : ns)
+      for (const std::string& rule : rules) {
+        Sweep::Curve c{"vs-h n=" + std::to_string(n) + " r=" + rule, families, {}};
+        for (const auto& h : hs) c.points.push_back({n, rule, h});
+        curves.push_back(std::move(c));
+      }
   }
   return curves;
 }
@@ -173,7 +206,8 @@ std::string sweep_names(const Json& root) {
 }  // namespace
 
 std::string SweepPolygon::id() const {
-  return family + "/n:" + std::to_string(n) + "/r:" + std::to_string(r) + "/seed:" + std::to_string(seed);
+  return family + "/n:" + std::to_string(n) + "/r:" + std::to_string(r) + (h ? "/h:" + std::to_string(*h) : "") +
+         "/seed:" + std::to_string(seed);
 }
 
 std::string default_sweeps_file() { return PD_SOURCE_DIR "/harness/sweeps.json"; }
@@ -205,16 +239,29 @@ Sweep load_sweep(const std::string& path, const std::string& name) {
   return s;
 }
 
+// The r of a grid point, or nothing when the family cannot realise the point.
+std::optional<std::size_t> feasible_reflex(const std::string& family_name, const Sweep::GridPoint& at) {
+  if (const HoleFamily* f = find_hole_family(family_name)) {
+    const std::size_t r = resolve_reflex(at.rule, f->default_reflex(at.n, *at.h), at.n);
+    if (f->infeasible(at.n, r, *at.h)) return std::nullopt;
+    return r;
+  }
+  const Family& f = *find_family(family_name);
+  const std::size_t r = resolve_reflex(at.rule, f.default_reflex(at.n), at.n);
+  if (f.infeasible(at.n, r)) return std::nullopt;
+  return r;
+}
+
 std::vector<SweepPolygon> sweep_polygons(const Sweep& sweep) {
-  std::map<std::tuple<std::string, std::size_t, std::size_t, std::uint64_t>, std::vector<std::string>> grid;
+  using Key = std::tuple<std::string, std::size_t, std::size_t, std::optional<std::size_t>, std::uint64_t>;
+  std::map<Key, std::vector<std::string>> grid;
   for (const Sweep::Curve& curve : sweep.curves) {
     for (const std::string& family_name : curve.families) {
-      const Family& family = *find_family(family_name);
-      for (const auto& [n, rule] : curve.points) {
-        const std::size_t r = resolve_reflex(rule, family, n);
-        if (family.infeasible(n, r)) continue;
+      for (const Sweep::GridPoint& at : curve.points) {
+        const std::optional<std::size_t> r = feasible_reflex(family_name, at);
+        if (!r) continue;
         for (std::uint64_t seed : sweep.seeds) {
-          auto& curves = grid[{family_name, n, r, seed}];
+          auto& curves = grid[{family_name, at.n, *r, at.h, seed}];
           if (std::find(curves.begin(), curves.end(), curve.label) == curves.end()) curves.push_back(curve.label);
         }
       }
@@ -222,7 +269,8 @@ std::vector<SweepPolygon> sweep_polygons(const Sweep& sweep) {
   }
   std::vector<SweepPolygon> polygons;
   for (auto& [key, curves] : grid)
-    polygons.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), std::get<3>(key), std::move(curves)});
+    polygons.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), std::get<3>(key), std::get<4>(key),
+                        std::move(curves)});
   return polygons;
 }
 

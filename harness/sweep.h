@@ -1,10 +1,15 @@
-// Sweeps: named grids of (algorithm, family, n, r, seed) keys, read from one JSON file
-// (harness/sweeps.json), and the deterministic list of keys a sweep (or one shard of it) runs.
+// Sweeps: named grids of (algorithm, family, n, r, seed) keys, and (algorithm, family, n, r, h, seed)
+// for the families with holes, read from one JSON file (harness/sweeps.json), and the deterministic
+// list of keys a sweep (or one shard of it) runs.
 //
 // A sweep is a set of curves. A curve is an axis and a grid: time versus n (a list of n, one curve per
-// reflex rule) or time versus r (a list of reflex rules, one curve per n). A reflex rule is a number,
-// "default" (the family's own choice for that n) or a fraction of n written "n/8", "3*n/8". Points a
-// family cannot realise (Family::infeasible) are left out of the grid, not reported as errors.
+// reflex rule, and per number of holes), time versus r (a list of reflex rules, one curve per n and
+// number of holes) or, for the families with holes, time versus h (a list of numbers of holes, one
+// curve per n and reflex rule). A reflex rule is a number, "default" (the family's own choice for that
+// n, and h) or a fraction of n written "n/8", "3*n/8". "families" is a list, "all" (every family
+// without holes), "controls_r" (those that control r) or "holes" (every family with holes, whose
+// curves need "h"). Points a family cannot realise (Family::infeasible) are left out of the grid, not
+// reported as errors.
 //
 // Keys run polygon by polygon: by family, then n, then r, then seed, then algorithm. So every polygon
 // is built once, and a grid point runs after every point it dominates (smaller n and smaller r), which
@@ -14,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,22 +43,29 @@ struct Sweep {
   std::map<std::string, double> budget_seconds_for;
   double timeout_seconds = 0;  // a key still running after this long is stopped and recorded skipped
 
+  struct GridPoint {
+    std::size_t n;
+    std::string rule;               // the reflex rule
+    std::optional<std::size_t> h;   // the number of holes, for the families with holes
+  };
   struct Curve {
-    std::string label;  // e.g. "vs-n r=default", "vs-r n=1000"
+    std::string label;  // e.g. "vs-n r=default", "vs-r n=1000", "vs-h n=1000 r=n/2"
     std::vector<std::string> families;
-    std::vector<std::pair<std::size_t, std::string>> points;  // n and the reflex rule
+    std::vector<GridPoint> points;
   };
   std::vector<Curve> curves;
 };
 
-// One polygon of a sweep: a family at (n, r) with a seed, and the curves it lies on.
+// One polygon of a sweep: a family at (n, r), and h for a family with holes, with a seed, and the
+// curves it lies on.
 struct SweepPolygon {
   std::string family;
   std::size_t n, r;
+  std::optional<std::size_t> h;
   std::uint64_t seed;
   std::vector<std::string> curves;
 
-  std::string id() const;  // "family/n:N/r:R/seed:S"
+  std::string id() const;  // "family/n:N/r:R/seed:S", or "family/n:N/r:R/h:H/seed:S"
 };
 
 struct Shard {
@@ -78,7 +91,7 @@ inline bool in_shard(std::size_t position, const Shard& shard) {
   return position % shard.count == shard.index - 1;
 }
 
-// The benchmark name of a key: "algorithm/family/n:N/r:R/seed:S".
+// The benchmark name of a key: "algorithm/" followed by the polygon's id.
 std::string key_name(const std::string& algorithm, const SweepPolygon& polygon);
 
 }  // namespace pd

@@ -199,7 +199,7 @@ TEST(Generators, UnknownFamilyNamesTheFamilies) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "unknown family hexagon; families: comb, convex, few-notches, notch-heavy, random, spiral, "
-              "x-pattern, x2-pairs, x4-quads");
+              "x-pattern, x2-pairs, x4-quads, convex-holes");
   }
 }
 
@@ -359,6 +359,68 @@ TEST(Generators, MillionVertices) {
   expect_large_valid("x2-pairs", 1'000'000, 333'332);
   expect_large_valid("x4-quads", 1'000'000, 4);
   expect_large_valid("x4-quads", 1'000'000, 333'332);
+}
+
+
+// The families with holes: exactly n vertices in all, r reflex vertices and h holes, through the
+// checked door (every ring simple, the holes inside and apart), the same bytes for the same arguments,
+// their feasible ranges as documented, and 2 * 10^6 vertices within 2^31.
+std::uint64_t fnv1a(const Rings& rings) {
+  std::vector<Point> all;
+  for (const Ring& ring : rings) all.insert(all.end(), ring.begin(), ring.end());
+  return fnv1a(all);
+}
+
+TEST(HoleFamilies, MakeExactlyNRAndHThroughTheCheckedDoor) {
+  ASSERT_EQ(hole_families().size(), 1u);
+  EXPECT_EQ(hole_families()[0].name, "convex-holes");
+  for (const std::size_t n : {6, 7, 24, 100, 1001})
+    for (const std::size_t h : {0, 1, 2, 5, 16}) {
+      const HoleFamily& f = hole_families()[0];
+      const std::size_t r = f.default_reflex(n, h);
+      if (f.infeasible(n, r, h)) continue;
+      const Polygon p = Polygon::make_with_holes(generate_with_holes(f.name, n, r, h, 3));
+      EXPECT_EQ(p.size(), n) << n << " " << h;
+      EXPECT_EQ(p.hole_count(), h) << n << " " << h;
+      EXPECT_EQ(p.reflex_count(), r) << n << " " << h;
+      EXPECT_FALSE(p.input_was_clockwise());
+      for (std::size_t k = 1; k <= h; ++k) EXPECT_FALSE(p.ring_was_reversed(k)) << "holes are written clockwise";
+    }
+  const Polygon p = Polygon::make_with_holes(generate_with_holes("convex-holes", 40, 12, 2, 1));
+  EXPECT_EQ(p.reflex_count(), 12u);
+}
+
+TEST(HoleFamilies, RangesAndDefaults) {
+  const HoleFamily& f = *find_hole_family("convex-holes");
+  EXPECT_FALSE(f.infeasible(3, 0, 0));
+  EXPECT_TRUE(f.infeasible(10, 1, 0));
+  EXPECT_FALSE(f.infeasible(6, 3, 1));
+  EXPECT_TRUE(f.infeasible(5, 3, 1));    // r <= n/2
+  EXPECT_TRUE(f.infeasible(100, 8, 3));  // r >= 3h
+  EXPECT_EQ(f.default_holes, 4u);
+  EXPECT_EQ(f.default_reflex(100, 4), 50u);
+  EXPECT_EQ(f.default_reflex(24, 8), 24u);
+  EXPECT_THROW(generate_with_holes("convex-holes", 100, 8, 3, 1), GeneratorError);
+  EXPECT_THROW(generate_with_holes("convex", 100, 0, 2, 1), GeneratorError);
+  EXPECT_EQ(generate_with_holes("convex", 100, 0, 0, 1), Rings{generate("convex", 100, 0, 1)});
+  EXPECT_THROW(generate("convex-holes", 100, 50, 1), std::invalid_argument);
+  EXPECT_EQ(generate_with_holes("convex-holes", 500, 100, 7, 9), generate_with_holes("convex-holes", 500, 100, 7, 9));
+  EXPECT_NE(generate_with_holes("convex-holes", 500, 100, 7, 9), generate_with_holes("convex-holes", 500, 100, 7, 10));
+}
+
+TEST(HoleFamilies, ChecksumsArePinned) {
+  EXPECT_EQ(fnv1a(generate_with_holes("convex-holes", 1000, 500, 4, 1)), 0x1ac3af713f9fd3c7ULL);
+  EXPECT_EQ(fnv1a(generate_with_holes("convex-holes", 300, 90, 30, 2)), 0x8efec3661af85110ULL);
+}
+
+TEST(HoleFamilies, TwoMillionVertices) {
+  for (const std::size_t h : {1, 1000}) {
+    const Rings rings = generate_with_holes("convex-holes", 2'000'000, 1'000'000, h, 5);
+    ASSERT_EQ(rings.size(), h + 1);
+    std::size_t n = 0;
+    for (const Ring& ring : rings) n += ring.size();
+    EXPECT_EQ(n, 2'000'000u);
+  }
 }
 
 }  // namespace

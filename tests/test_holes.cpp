@@ -6,12 +6,15 @@
 #include "core/validate.h"
 #include "generators/rng.h"
 #include "core/io.h"
+#include "tests/command.h"
 #include "tests/fixtures.h"
 #include "tests/independent_check.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -19,6 +22,8 @@
 
 namespace pd {
 namespace {
+
+namespace fs = std::filesystem;
 
 Ring square(double x0, double y0, double size) { return {{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}}; }
 Ring reversed(Ring r) {
@@ -398,6 +403,50 @@ TEST(EarcutFixtures, EachIsTriangulatedOrRefusedForItsDefect) {
   EXPECT_EQ(accepted, 12u);
   EXPECT_EQ(with_holes, 10u);
   EXPECT_EQ(full_in_earcut, 6u);  // building, dude, hilbert, issue16, issue17, issue29
+}
+
+// A sweep over the families with holes: keys carry h, the algorithms that take holes are measured and
+// valid with their counts (n + 2h - 2 triangles; the lower bound ceil(r/2) + 1 - h), the others are
+// skipped with the reason; a curve of families with holes needs "h", and a curve without may not have it.
+TEST(HoleFamilies, AreSweptWithHInTheKeys) {
+  const fs::path dir = command::scratch_folder("polydecomp-hole-sweep");
+  std::ofstream(dir / "sweeps.json")
+      << "{\"holes\": {\"description\": \"holes\", \"algorithms\": [\"monotone\", \"hertel-mehlhorn\", \"keil\"], "
+         "\"seeds\": [1], \"min_time\": 0.001, \"budget_seconds\": 5, \"timeout_seconds\": 60, \"curves\": ["
+         "{\"vs\": \"n\", \"families\": \"holes\", \"r\": [\"default\"], \"h\": [2], \"n\": [30, 60]},"
+         "{\"vs\": \"h\", \"families\": [\"convex-holes\"], \"n\": [60], \"r\": [\"n/2\"], \"h\": [1, 3]}]},"
+         " \"bad\": {\"description\": \"no h\", \"algorithms\": \"all\", \"seeds\": [1], \"min_time\": 0.001, "
+         "\"budget_seconds\": 5, \"timeout_seconds\": 60, \"curves\": [{\"vs\": \"n\", \"families\": \"holes\", "
+         "\"r\": [\"default\"], \"n\": [30]}]}}\n";
+  const command::Result r =
+      command::run(PD_BENCH " --sweep holes --sweeps " + (dir / "sweeps.json").string() + " --out " + dir.string(), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream journal(dir / "holes.journal.jsonl");
+  std::map<std::string, std::string> status;
+  for (std::string line; std::getline(journal, line);) {
+    const Json j = parse_json(line);
+    if (!j.get("status")) continue;
+    const std::string name = j.get("name")->text;
+    status[name] = j.get("status")->text;
+    if (name.rfind("keil/", 0) == 0) {
+      EXPECT_NE(j.get("error_message")->text.find("does not take polygons with holes"), std::string::npos) << name;
+      continue;
+    }
+    EXPECT_EQ(j.get("status")->text, "ok") << name;
+    const double n = j.get("n")->number(), h = j.get("h")->number(), r_ = j.get("r")->number();
+    if (name.rfind("monotone/", 0) == 0) {
+      EXPECT_EQ(j.get("pieces")->number(), n + 2 * h - 2) << name;
+    }
+    EXPECT_EQ(j.get("lower_bound")->number(), std::max(1.0, std::floor((r_ + 1) / 2) + 1 - h)) << name;
+  }
+  EXPECT_EQ(status.size(), 12u);  // 4 polygons (n 30 and 60 at h 2; h 1 and 3 at n 60) x 3 algorithms
+  EXPECT_EQ(status.count("monotone/convex-holes/n:60/r:30/h:3/seed:1"), 1u);
+  EXPECT_EQ(status.count("monotone/convex-holes/n:30/r:15/h:2/seed:1"), 1u);
+  const command::Result bad =
+      command::run(PD_BENCH " --sweep bad --sweeps " + (dir / "sweeps.json").string() + " --out " + dir.string(), dir);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("missing \"h\""), std::string::npos) << bad.err;
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -5,8 +5,9 @@ numbers, n, r, + - * / ^, parentheses, log(x), log^k(x), log*(x), min(...), max(
 cost mode, as in the harness, every factor is kept at least 1 (n >= 2, r >= 1, log2 >= 1), because a
 cost is compared as a ratio.
 
-Piece bounds ("== n-2", "<= 4*OPT", ">= ceil(r/2)+1") are a relation and an expression over n, r and
-OPT, with ceil(x) and floor(x) too, evaluated exactly (no clamping).
+Piece bounds ("== n-2", "== n+2*h-2", "<= 4*OPT", ">= ceil(r/2)+1") are a relation and an expression
+over n, r, h (the number of holes) and OPT, with ceil(x) and floor(x) too, evaluated exactly (no
+clamping).
 
 A text outside the grammar parses to None: no claim. tests/data/bound_expr_vectors.json holds the time
 bounds this parser and core/bound_expr.h are both tested on.
@@ -16,7 +17,7 @@ import math
 import operator
 import re
 
-_TOKEN = re.compile(r"\s*(?:(\d+(?:\.\d*)?|\.\d+)|(log\*|log|min|max|sqrt|ceil|floor|OPT|n|r)|(.))")
+_TOKEN = re.compile(r"\s*(?:(\d+(?:\.\d*)?|\.\d+)|(log\*|log|min|max|sqrt|ceil|floor|OPT|n|r|h)|(.))")
 _RELATIONS = ("==", "<=", ">=", "<", ">")
 _BINARY = {"+": operator.add, "-": operator.sub, "*": operator.mul, "/": operator.truediv, "^": operator.pow}
 
@@ -194,7 +195,7 @@ def parse_time_bound(text):
 
 
 class PieceBound:
-    """A claimed piece count: relation and expression over n, r and OPT."""
+    """A claimed piece count: relation and expression over n, r, h (the holes) and OPT."""
 
     def __init__(self, text, relation, tree):
         self.text = text
@@ -202,12 +203,12 @@ class PieceBound:
         self._tree = tree
         self.uses_opt = _mentions(tree, "OPT")
 
-    def value(self, n, r, opt=None):
-        return _evaluate(self._tree, {"n": n, "r": r, "OPT": opt}, cost=False)
+    def value(self, n, r, opt=None, h=0):
+        return _evaluate(self._tree, {"n": n, "r": r, "h": h, "OPT": opt}, cost=False)
 
-    def holds(self, pieces, n, r, opt=None):
+    def holds(self, pieces, n, r, opt=None, h=0):
         """Whether pieces satisfies the bound (exactly, with a 1e-9 relative slack for decimals)."""
-        v = self.value(n, r, opt)
+        v = self.value(n, r, opt, h)
         slack = 1e-9 * max(1.0, abs(v))
         return {"==": abs(pieces - v) <= slack, "<=": pieces <= v + slack, ">=": pieces >= v - slack,
                 "<": pieces < v + slack, ">": pieces > v - slack}[self.relation]
@@ -219,7 +220,7 @@ def parse_piece_bound(text):
     for relation in _RELATIONS:
         if text.startswith(relation):
             try:
-                tree = _Parser(_tokens(text[len(relation):]), ("n", "r", "OPT")).whole()
+                tree = _Parser(_tokens(text[len(relation):]), ("n", "r", "h", "OPT")).whole()
             except (_Fail, IndexError):
                 return None
             return PieceBound(text, relation, tree)

@@ -6,8 +6,9 @@ Time: per algorithm and family, log t = c + a log n + b log r (t the CPU time of
 points; the same is done for each operation counter, which does not jitter with the machine.
 
 Pieces: each valid run is checked against its claimed piece bound ("== n-2", "== r+1", "<= 4*OPT",
-...) and, for convex decompositions, against the lower bound ceil(r/2)+1. OPT is taken as the best
-valid piece count on the same polygon (same family, n, r and seed) among algorithms of the same kind
+...) and, for convex decompositions, against the lower bound ceil(r/2)+1-h (h the holes; at least 1;
+docs/holes.md). OPT is taken as the best valid piece count on the same polygon (same family, n, r, h
+and seed) among algorithms of the same kind
 that play by the same rules: a diagonal-only algorithm is compared with diagonal-only ones, an algorithm
 that may add Steiner points with all. Where no optimal algorithm ran on a polygon, that best is only an
 upper bound on OPT, so ratios are then lower than the true approximation ratios.
@@ -66,6 +67,11 @@ def best_pieces(runs, registry):
                 key = (run.polygon, algo["kind"], allowed)
                 best[key] = min(best.get(key, run.pieces), run.pieces)
     return best
+
+
+def lower_bound(run):
+    """Every convex decomposition's: ceil(r/2) + 1 - h pieces, and at least 1 (docs/holes.md)."""
+    return max(1, (run.r + 1) // 2 + 1 - run.h)
 
 
 def reference(run, algo, best):
@@ -192,9 +198,9 @@ class PieceRow:
             ratio = run.pieces / opt if opt else None
             if ratio is not None and (self.worst_ratio is None or ratio > self.worst_ratio):
                 self.worst_ratio = ratio
-            if claim and not (claim.uses_opt and opt is None) and not claim.holds(run.pieces, run.n, run.r, opt):
+            if claim and not (claim.uses_opt and opt is None) and not claim.holds(run.pieces, run.n, run.r, opt, run.h):
                 self.violations.append((run, opt))
-            if self.kind == "convex" and run.pieces < (run.r + 1) // 2 + 1:
+            if self.kind == "convex" and run.pieces < lower_bound(run):
                 self.below_lower.append(run)
         self.checked = len(valid)
         if not claim:
@@ -212,7 +218,7 @@ class PieceRow:
                 len(self.violations), self.checked, self.claim_text, run.name, run.pieces, opt))
         if self.below_lower:
             run = self.below_lower[0]
-            texts.append("{} runs below ceil(r/2)+1 (e.g. {}: {} pieces)".format(
+            texts.append("{} runs below ceil(r/2)+1-h (e.g. {}: {} pieces)".format(
                 len(self.below_lower), run.name, run.pieces))
         return texts
 

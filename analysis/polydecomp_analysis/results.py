@@ -14,19 +14,21 @@ import json
 import os
 import re
 
-_KEY = re.compile(r"^(?P<algorithm>[^/]+)/(?P<family>[^/]+)/n:(?P<n>\d+)/r:(?P<r>\d+)/seed:(?P<seed>\d+)$")
+_KEY = re.compile(r"^(?P<algorithm>[^/]+)/(?P<family>[^/]+)/n:(?P<n>\d+)/r:(?P<r>\d+)(?:/h:(?P<h>\d+))?"
+                  r"/seed:(?P<seed>\d+)$")
 _TIME_UNITS = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
-_CSV_COLUMNS = ["key_index", "name", "algorithm", "family", "n", "r", "seed", "status", "reason", "iterations",
+_CSV_COLUMNS = ["key_index", "name", "algorithm", "family", "n", "r", "h", "seed", "status", "reason", "iterations",
                 "real_time_s", "cpu_time_s", "pieces", "steiner", "lower_bound", "valid", "curves"]
 
 
 def parse_key(name):
-    """{"algorithm", "family", "n", "r", "seed"} of a key name, or None."""
+    """{"algorithm", "family", "n", "r", "h", "seed"} of a key name, or None; h is 0 for a family
+    without holes (whose keys have no h:)."""
     m = _KEY.match(name)
     if not m:
         return None
     return {"algorithm": m["algorithm"], "family": m["family"], "n": int(m["n"]), "r": int(m["r"]),
-            "seed": int(m["seed"])}
+            "h": int(m["h"] or 0), "seed": int(m["seed"])}
 
 
 def read_journal(path):
@@ -136,7 +138,7 @@ def to_csv(runs):
                "reason": reason(run), "iterations": run.get("iterations", ""),
                "real_time_s": repr(seconds(run)), "cpu_time_s": repr(seconds(run, "cpu_time")),
                "curves": ";".join(run.get("curves", []))}
-        for field in ("algorithm", "family", "n", "r", "seed"):
+        for field in ("algorithm", "family", "n", "r", "h", "seed"):
             row[field] = key.get(field, "")
         for field in ("n", "r", "pieces", "steiner", "lower_bound", "valid") + tuple(ops):
             if field in run:
@@ -158,6 +160,7 @@ class Run:
         self.algorithm, self.family, self.seed = key["algorithm"], key["family"], key["seed"]
         self.n = int(obj.get("n", key["n"]))
         self.r = int(obj.get("r", key["r"]))
+        self.h = int(obj.get("h", key["h"]))
         self.status = obj.get("status", "failed" if obj.get("error_occurred") else "ok")
         self.reason = reason(obj)
         # CPU time of one call: the algorithms are single-threaded, and unlike wall time it does not
@@ -171,7 +174,7 @@ class Run:
     @property
     def polygon(self):
         """The polygon's identity, shared by every algorithm run on it."""
-        return (self.family, self.n, self.r, self.seed)
+        return (self.family, self.n, self.r, self.h, self.seed)
 
     @property
     def timed(self):

@@ -56,6 +56,13 @@ class PieceBoundTest(unittest.TestCase):
         self.assertFalse(strict.holds(13, 0, 0, 3))
         self.assertEqual(bound_expr.parse_piece_bound("== r+1").value(10, 4), 5)
 
+    def test_holes(self):
+        tri = bound_expr.parse_piece_bound("== n+2*h-2")
+        self.assertTrue(tri.holds(8, 10, 3))
+        self.assertTrue(tri.holds(12, 10, 3, h=2))
+        self.assertFalse(tri.holds(8, 10, 3, h=2))
+        self.assertEqual(bound_expr.parse_piece_bound("<= r+1-h").value(10, 6, h=2), 5)
+
     def test_unknown_forms_are_no_claim(self):
         for text in ("n-2", "about OPT", "<= 4*OPTS", ""):
             self.assertIsNone(bound_expr.parse_piece_bound(text), text)

@@ -160,8 +160,8 @@ class BoundsTest(SyntheticSweep):
 
     def test_an_invalid_result_is_not_a_reference(self):
         best = bounds.best_pieces(self.runs, self.registry)
-        self.assertEqual(best[(("random", 200, 50, 1), "convex", False)], 101)  # opt's 26 was invalid
-        self.assertEqual(best[(("random", 200, 50, 2), "convex", False)], 26)
+        self.assertEqual(best[(("random", 200, 50, 0, 1), "convex", False)], 101)  # opt's 26 was invalid
+        self.assertEqual(best[(("random", 200, 50, 0, 2), "convex", False)], 26)
 
 
 class RenderingTest(SyntheticSweep):
@@ -192,3 +192,12 @@ class RenderingTest(SyntheticSweep):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class LowerBoundTest(unittest.TestCase):
+    def test_holes_lower_the_convex_lower_bound(self):
+        def run(r, h):
+            return results.Run({"name": "a/convex-holes/n:100/r:{}/h:{}/seed:1".format(r, h), "status": "ok"})
+        self.assertEqual(bounds.lower_bound(run(9, 0)), 6)
+        self.assertEqual(bounds.lower_bound(run(9, 4)), 2)
+        self.assertEqual(bounds.lower_bound(run(9, 40)), 1)

@@ -72,6 +72,14 @@ class JournalTest(unittest.TestCase):
         self.assertTrue(row["reason"].startswith("skipped (ceiling)"))
 
 
+class KeyTest(unittest.TestCase):
+    def test_keys_of_families_with_holes_carry_h(self):
+        self.assertEqual(results.parse_key("monotone/convex-holes/n:100/r:50/h:4/seed:2"),
+                         {"algorithm": "monotone", "family": "convex-holes", "n": 100, "r": 50, "h": 4, "seed": 2})
+        self.assertEqual(results.parse_key("monotone/comb/n:100/r:49/seed:2")["h"], 0)
+        self.assertIsNone(results.parse_key("monotone/comb/n:100/h:4/seed:2"))
+
+
 class RejournalTest(unittest.TestCase):
     """A journal written back from assembled results, some keys left out, then those keys measured again."""
 
