@@ -4,8 +4,10 @@
 // triangulation").
 //
 // Expected time O(n log* n) over the algorithm's own random choices (for every input), space O(n).
-// Pre: a simple counter-clockwise polygon; collinear (180-degree) vertices and horizontal edges
-// allowed. Output: n-3 diagonals, n-2 non-degenerate triangles, no Steiner points.
+// Pre: a polygon, with h >= 0 holes (the trapezoidal decomposition is of any non-crossing segments,
+// and the pending edges are walked ring by ring; with holes Seidel's bound is O(n log n)); collinear
+// (180-degree) vertices and horizontal edges allowed. Output: n+3h-3 diagonals, n+2h-2
+// non-degenerate triangles, no Steiner points.
 //
 // 1. The trapezoidal decomposition of the edges, inserted in a random order (see "Deviation from the
 //    paper" below), with its search structure (a DAG of point nodes, segment nodes and trapezoid
@@ -260,7 +262,9 @@ class Trapezoidation {
   }
 
  private:
-  std::uint32_t next(std::uint32_t v) const { return v + 1 == n_ ? 0 : v + 1; }
+  // The polygon's next and previous vertex in v's ring (the edge s runs from s to next(s)).
+  std::uint32_t next(std::uint32_t v) const { return static_cast<std::uint32_t>(p_.next(v)); }
+  std::uint32_t prev(std::uint32_t v) const { return static_cast<std::uint32_t>(p_.prev(v)); }
   const Point& at(std::uint32_t v) const { return p_[v]; }
   Trapezoid& z(std::uint32_t t) { return cells_[t].z; }
   std::uint32_t upper(std::uint32_t s) const { return segs_[s].upper; }
@@ -564,7 +568,7 @@ class Trapezoidation {
   }
 
   // The polygon's other edge at vertex v, an endpoint of edge s.
-  std::uint32_t other_edge(std::uint32_t v, std::uint32_t s) const { return s == v ? (v == 0 ? n_ - 1 : v - 1) : v; }
+  std::uint32_t other_edge(std::uint32_t v, std::uint32_t s) const { return s == v ? prev(v) : v; }
 
   // The neighbours above the first trapezoid t, which s splits from its top vertex hi: a side
   // starting at hi (it can only be `adjacent`, the polygon's other edge there) leaves the piece on
@@ -647,7 +651,7 @@ class Trapezoidation {
   bool start_run(Tracer& t, std::uint32_t& from) {
     for (; from < n_; ++from) {
       const std::uint32_t v = from;
-      if (inserted(v) || !inserted(v == 0 ? n_ - 1 : v - 1)) continue;
+      if (inserted(v) || !inserted(prev(v))) continue;
       ++from;
       t = {v, run_search_start(v), true, false};
       prefetch(cells_[t.cell]);
@@ -749,8 +753,8 @@ Decomposition seidel(const Polygon& p, Counters& counters) {
 }  // namespace
 
 REGISTER_ALGORITHM({.name = "seidel", .kind = Kind::Triangulation, .time_bound = "n*log*(n)",
-                    .pieces_bound = "== n-2",
+                    .pieces_bound = "== n+2*h-2",
                     .source = "Seidel 1991, randomized trapezoidation + monotone triangulation (slides 003 table)",
-                    .run = seidel});
+                    .accepts = {.holes = true}, .run = seidel});
 
 }  // namespace pd
