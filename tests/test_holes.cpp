@@ -256,6 +256,9 @@ TEST(Holes, EveryAlgorithmThatTakesHolesIsValid) {
       if (a.kind == Kind::Convex) {
         EXPECT_GE(pieces.size() + h, (r + 1) / 2 + 1) << a.name;
       }
+      if (a.pieces_bound == "== r+1-h") {
+        EXPECT_EQ(pieces.size() + h, r + 1) << a.name << " on polygon " << k;
+      }
       if (d.steiner.empty()) {
         const std::vector<QPoint> pts = exact_points(p, d);
         std::vector<independent::Cycle> cycles;

@@ -350,16 +350,27 @@ std::vector<VertexId> notches_of(const Polygon& p) {
 
 namespace {
 
-// The naive search: every polygon edge, walked from the notch's successor round to its predecessor,
-// each vertex placed once.
+// The naive search: every polygon edge, the notch's ring walked from the notch's successor round to
+// its predecessor, every other ring (a hole, or the outer ring for a notch of a hole) all round; each
+// vertex placed once.
 class EveryEdge : public BoundarySearch {
  public:
   explicit EveryEdge(const Polygon& p) : p_(p) {}
 
   void search(Shot& shot) override {
-    std::size_t w = p_.next(shot.notch());
+    const std::size_t own = p_.ring_of(shot.notch());
+    walk(shot, p_.next(shot.notch()), p_.ring_end(own) - p_.ring_begin(own) - 2);
+    for (std::size_t k = 0; k < p_.ring_count(); ++k)
+      if (k != own) walk(shot, p_.ring_begin(k), p_.ring_end(k) - p_.ring_begin(k));
+  }
+
+  std::int64_t edge_tests() const { return edge_tests_; }
+
+ private:
+  // The `edges` edges of a ring from vertex w on.
+  void walk(Shot& shot, std::size_t w, std::size_t edges) {
     Place at_w = shot.place(w);
-    for (std::size_t k = 2; k < p_.size(); ++k) {
+    for (std::size_t k = 0; k < edges; ++k) {
       const std::size_t u = p_.next(w);
       const Place at_u = shot.place(u);
       ++edge_tests_;
@@ -369,9 +380,6 @@ class EveryEdge : public BoundarySearch {
     }
   }
 
-  std::int64_t edge_tests() const { return edge_tests_; }
-
- private:
   const Polygon& p_;
   std::int64_t edge_tests_ = 0;
 };
@@ -406,21 +414,24 @@ struct AroundVertex {
   }
 };
 
-// The boundary of P as a cycle of vertex ids, Steiner points inside the edges they name, in order.
-std::vector<VertexId> boundary_cycle(const Polygon& p, const Decomposition& d, const std::vector<QPoint>& pts) {
+// The boundary of P as one cycle of vertex ids per ring, Steiner points inside the edges they name, in
+// order.
+std::vector<std::vector<VertexId>> boundary_cycles(const Polygon& p, const Decomposition& d,
+                                                   const std::vector<QPoint>& pts) {
   const std::size_t n = p.size();
   std::vector<std::vector<VertexId>> on_edge(n);
   for (std::size_t k = 0; k < d.steiner.size(); ++k)
     if (d.steiner[k].boundary_edge != kInterior) on_edge[d.steiner[k].boundary_edge].push_back(static_cast<VertexId>(n + k));
-  std::vector<VertexId> cycle;
+  std::vector<std::vector<VertexId>> cycles(p.ring_count());
   for (std::size_t i = 0; i < n; ++i) {
+    std::vector<VertexId>& cycle = cycles[p.ring_of(i)];
     cycle.push_back(static_cast<VertexId>(i));
     std::sort(on_edge[i].begin(), on_edge[i].end(), [&](VertexId s, VertexId t) {
       return CGAL::squared_distance(pts[i], pts[s]) < CGAL::squared_distance(pts[i], pts[t]);
     });
     cycle.insert(cycle.end(), on_edge[i].begin(), on_edge[i].end());
   }
-  return cycle;
+  return cycles;
 }
 
 }  // namespace
@@ -436,8 +447,8 @@ NaiveGraph naive_graph(const Polygon& p, const Decomposition& d) {
       g.adjacent[u][g.degree[u]++] = w;
     }
   };
-  const std::vector<VertexId> cycle = boundary_cycle(p, d, pts);
-  for (std::size_t i = 0; i < cycle.size(); ++i) link(cycle[i], cycle[(i + 1) % cycle.size()]);
+  for (const std::vector<VertexId>& cycle : boundary_cycles(p, d, pts))
+    for (std::size_t i = 0; i < cycle.size(); ++i) link(cycle[i], cycle[(i + 1) % cycle.size()]);
   for (const Cut& c : d.cuts) link(c.a, c.b);
   for (std::size_t v = 0; v < pts.size(); ++v)
     std::sort(g.adjacent[v].begin(), g.adjacent[v].begin() + g.degree[v], AroundVertex{pts, pts[v]});
@@ -453,21 +464,21 @@ std::vector<Piece> naive_pieces(const Polygon& p, const Decomposition& d, const 
   // Half-edge v -> adjacent[v][k] is 3 v + k; a piece lies to the left of each of its half-edges.
   std::vector<char> walked(3 * g.adjacent.size(), 0);
   std::vector<Piece> pieces;
-  const std::vector<VertexId> cycle = boundary_cycle(p, d, exact_points(p, d));
-  for (std::size_t i = 0; i < cycle.size(); ++i) {
-    VertexId from = cycle[i], to = cycle[(i + 1) % cycle.size()];
-    std::size_t slot = slot_of(from, to);
-    if (walked[3 * from + slot]) continue;
-    Piece piece;
-    while (!walked[3 * from + slot]) {
-      walked[3 * from + slot] = 1;
-      piece.push_back(from);
-      const std::size_t back = slot_of(to, from);
-      const std::size_t next = back == 0 ? g.degree[to] - 1 : back - 1;
-      from = to, slot = next, to = g.adjacent[from][slot];
+  for (const std::vector<VertexId>& cycle : boundary_cycles(p, d, exact_points(p, d)))
+    for (std::size_t i = 0; i < cycle.size(); ++i) {
+      VertexId from = cycle[i], to = cycle[(i + 1) % cycle.size()];
+      std::size_t slot = slot_of(from, to);
+      if (walked[3 * from + slot]) continue;
+      Piece piece;
+      while (!walked[3 * from + slot]) {
+        walked[3 * from + slot] = 1;
+        piece.push_back(from);
+        const std::size_t back = slot_of(to, from);
+        const std::size_t next = back == 0 ? g.degree[to] - 1 : back - 1;
+        from = to, slot = next, to = g.adjacent[from][slot];
+      }
+      pieces.push_back(std::move(piece));
     }
-    pieces.push_back(std::move(piece));
-  }
   return pieces;
 }
 
