@@ -30,6 +30,20 @@ inline int orient(const QPoint& p, const QPoint& q, const QPoint& r) {
   return static_cast<int>(CGAL::orientation(p, q, r));
 }
 
+// Whether p lies on the closed segment ab, and whether the closed segments ab and cd share a point.
+// Exact, for input points and exact points alike.
+template <class P>
+bool on_closed_segment(const P& a, const P& b, const P& p) {
+  return orient(a, b, p) == 0 && CGAL::collinear_are_ordered_along_line(a, p, b);
+}
+template <class P>
+bool closed_segments_meet(const P& a, const P& b, const P& c, const P& d) {
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return on_closed_segment(a, b, c) || on_closed_segment(a, b, d) || on_closed_segment(c, d, a) ||
+         on_closed_segment(c, d, b);
+}
+
 // Exact decimal or "p/q" text of a rational; a double-representable value prints as a JSON number
 // that round-trips exactly.
 std::string rational_text(const Rational& v);

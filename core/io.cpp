@@ -75,18 +75,21 @@ std::string exact_coordinate(const Rational& v) {
 
 }  // namespace
 
+RunTotals totals_of(const std::vector<PartResult>& parts) {
+  RunTotals t;
+  for (const PartResult& part : parts) {
+    t.add(*part.polygon);
+    t.pieces += part.pieces->size();
+    t.steiner += part.decomposition->steiner.size();
+  }
+  return t;
+}
+
 std::string run_json(const RunReport& r) {
   const PointNumbering numbering(r.parts);
-  std::size_t n = 0, reflex = 0, holes = 0, piece_count = 0, steiner_count = 0;
-  for (const PartResult& part : r.parts) {
-    n += part.polygon->input_size();
-    reflex += part.polygon->reflex_count();
-    holes += part.polygon->hole_count();
-    piece_count += part.pieces->size();
-    steiner_count += part.decomposition->steiner.size();
-  }
-  std::string out = "{\"algorithm\": " + json_quote(r.algorithm) + ", \"n\": " + std::to_string(n) +
-                    ", \"reflex\": " + std::to_string(reflex) + ", \"holes\": " + std::to_string(holes) +
+  const RunTotals t = totals_of(r.parts);
+  std::string out = "{\"algorithm\": " + json_quote(r.algorithm) + ", \"n\": " + std::to_string(t.n) +
+                    ", \"reflex\": " + std::to_string(t.reflex) + ", \"holes\": " + std::to_string(t.holes) +
                     ", \"points\": [";
   bool first = true;
   for (const PartResult& part : r.parts)
@@ -112,7 +115,7 @@ std::string run_json(const RunReport& r) {
       ++piece_index;
     }
   }
-  out += "], \"piece_count\": " + std::to_string(piece_count) + ", \"steiner_count\": " + std::to_string(steiner_count);
+  out += "], \"piece_count\": " + std::to_string(t.pieces) + ", \"steiner_count\": " + std::to_string(t.steiner);
   std::string merged;
   for (std::size_t k = 0; k < r.parts.size(); ++k)
     for (const auto& [index, repeats] : r.parts[k].polygon->merged())

@@ -39,6 +39,12 @@ struct PartResult {
   const std::vector<Piece>* pieces;
 };
 
+// The parts' totals, and their pieces and Steiner points.
+struct RunTotals : PolygonTotals {
+  std::size_t pieces = 0, steiner = 0;
+};
+RunTotals totals_of(const std::vector<PartResult>& parts);
+
 struct RunReport {
   std::string algorithm;
   std::vector<PartResult> parts;  // one for a polygon; a multipolygon's parts in file order

@@ -23,19 +23,6 @@ std::string edge_name(std::size_t i, std::size_t n, const NameOf& name) {
   return name(i) + "-" + name((i + 1) % n);
 }
 
-template <class P>
-bool on_closed_segment(const P& a, const P& b, const P& p) {
-  return orient(a, b, p) == 0 && CGAL::collinear_are_ordered_along_line(a, p, b);
-}
-
-template <class P>
-bool closed_segments_meet(const P& a, const P& b, const P& c, const P& d) {
-  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return on_closed_segment(a, b, c) || on_closed_segment(a, b, d) || on_closed_segment(c, d, a) ||
-         on_closed_segment(c, d, b);
-}
-
 // Adjacent edges (a,b), (b,c) of a simple chain meet only at b: they fail when c folds back onto ab.
 template <class P>
 bool folds_back(const P& a, const P& b, const P& c) {

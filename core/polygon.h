@@ -95,6 +95,18 @@ class Polygon {
   std::vector<std::pair<std::size_t, std::size_t>> merged_;
 };
 
+// Totals over a multipolygon's parts, as the reports give them: input vertices (merged ones
+// counted), reflex vertices, holes and merged vertices.
+struct PolygonTotals {
+  std::size_t n = 0, reflex = 0, holes = 0, merged = 0;
+  void add(const Polygon& p) {
+    n += p.input_size();
+    reflex += p.reflex_count();
+    holes += p.hole_count();
+    merged += p.merged().size();
+  }
+};
+
 // A multipolygon's parts through the same door: each part checked as make_with_holes checks it, and
 // no two parts touching, crossing or overlapping (one part may lie in another's hole).
 std::vector<Polygon> make_parts(std::vector<Rings> parts);

@@ -241,6 +241,7 @@ Ring ring_of(const Json& ring) {
     if (!pos.is_array() || pos.items.size() < 2) bad("GeoJSON: a position must be [x, y]");
     for (const Json& c : pos.items)
       if (!c.is_number()) bad("GeoJSON: a coordinate is not a number");
+    for (std::size_t k = 2; k < pos.items.size(); ++k) coordinate(pos.items[k].text, in_geojson);  // read, dropped
     const double x = coordinate(pos.items[0].text, in_geojson);
     out.emplace_back(x, coordinate(pos.items[1].text, in_geojson));
   }

@@ -7,7 +7,6 @@
 // is inside a part exactly when the edge runs rightwards.
 #include "core/ring_layout.h"
 
-
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -26,18 +25,6 @@ struct Edge {
 struct Meet {
   std::uint32_t a, b;
 };
-
-bool on_closed_segment(const Point& a, const Point& b, const Point& p) {
-  return orient(a, b, p) == 0 && CGAL::collinear_are_ordered_along_line(a, p, b);
-}
-
-bool segments_meet(const Edge& e, const Edge& f) {
-  const int o1 = orient(e.lo, e.hi, f.lo), o2 = orient(e.lo, e.hi, f.hi);
-  const int o3 = orient(f.lo, f.hi, e.lo), o4 = orient(f.lo, f.hi, e.hi);
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return on_closed_segment(e.lo, e.hi, f.lo) || on_closed_segment(e.lo, e.hi, f.hi) ||
-         on_closed_segment(f.lo, f.hi, e.lo) || on_closed_segment(f.lo, f.hi, e.hi);
-}
 
 // Bottom-to-top order of active edges, decided where the later of the two starts. Active edges that
 // do not meet are ordered consistently; a pair that the order cannot separate meets.
@@ -79,7 +66,9 @@ class LayoutSweep {
   std::string fault() {
     std::vector<std::uint32_t> order(edges_.size());
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return point(a) < point(b); });
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return point(a) < point(b) || (point(a) == point(b) && a < b);
+    });
     for (std::size_t k = 1; k < order.size(); ++k)
       if (point(order[k - 1]) == point(order[k]))
         return vertex_name(order[k - 1]) + " coincides with " + vertex_name(order[k]);
@@ -128,7 +117,7 @@ class LayoutSweep {
   void test(std::uint32_t a, std::uint32_t b) const {
     const Edge &e = edges_[a], &f = edges_[b];
     if (e.part == f.part && e.ring == f.ring) return;
-    if (segments_meet(e, f)) throw Meet{a, b};
+    if (closed_segments_meet(e.lo, e.hi, f.lo, f.hi)) throw Meet{a, b};
   }
 
   // At a ring's leftmost vertex: the edge just below tells which region the ring starts in.
@@ -150,7 +139,7 @@ class LayoutSweep {
       if (e.rightwards) return;
       note(e.ring == 0 ? hole + " is not inside " + ring_name(me.part, 0) : hole + " lies inside " + ring_name(e.part, e.ring));
     } else {
-      note(e.rightwards ? "part " + std::to_string(me.part) + " and part " + std::to_string(e.part) + " overlap"
+      note(e.rightwards ? hole + " lies inside part " + std::to_string(e.part)
                         : hole + " lies outside its outer ring or inside another of its holes");
     }
   }

@@ -195,7 +195,7 @@ std::string unmatched_edges(const std::vector<Piece>& pieces, std::vector<Vertex
 }
 
 // The tiling test: the unshared edges of the pieces must be exactly the polygon's boundary, each edge
-// (i, i+1) walked forwards, possibly through Steiner points strictly inside it, in order.
+// (i, next(i)) walked forwards, possibly through Steiner points strictly inside it, in order.
 template <class P>
 std::string chain_fault(const Polygon& p, const std::vector<P>& pts, const std::vector<Piece>& pieces) {
   std::vector<VertexId> successor(pts.size(), kNoSuccessor);

@@ -326,17 +326,10 @@ RunOutput report(const Algorithm& algo, const std::vector<Polygon>& parts, const
   if (json) {
     result.out = run_json({algo.name, results, valid, seconds, &counters});
   } else {
-    std::size_t n = 0, reflex = 0, holes = 0, pieces = 0, steiner = 0;
-    for (std::size_t k = 0; k < parts.size(); ++k) {
-      n += parts[k].input_size();
-      reflex += parts[k].reflex_count();
-      holes += parts[k].hole_count();
-      pieces += checks[k].pieces.size();
-      steiner += ds[k].steiner.size();
-    }
-    result.out = algo.name + ": n=" + std::to_string(n) + " reflex=" + std::to_string(reflex) +
-                 count_text("holes", holes, holes > 0) + count_text("parts", parts.size(), parts.size() > 1) +
-                 " pieces=" + std::to_string(pieces) + " steiner=" + std::to_string(steiner) +
+    const RunTotals t = totals_of(results);
+    result.out = algo.name + ": n=" + std::to_string(t.n) + " reflex=" + std::to_string(t.reflex) +
+                 count_text("holes", t.holes, t.holes > 0) + count_text("parts", parts.size(), parts.size() > 1) +
+                 " pieces=" + std::to_string(t.pieces) + " steiner=" + std::to_string(t.steiner) +
                  (valid ? std::string(" valid=") + (*valid ? "yes" : "NO (" + reason + ")") : "") +
                  " seconds=" + double_text(seconds) + "\n";
   }
@@ -527,17 +520,16 @@ int cmd_run(const std::vector<std::string>& args) {
   const std::string svg = svg_path(vm);
   if (vm.count("max-memory")) limit_memory_growth(byte_size(vm["max-memory"].as<std::string>()), vm["max-memory"].as<std::string>());
   const std::vector<Polygon> parts = read_input(vm["input"].as<std::string>());
-  std::size_t n = 0, reflex = 0;
+  PolygonTotals totals;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     if (const auto why = refusal(*algo, parts[k]))
       throw Exit{kBadPolygon, (parts.size() > 1 ? "part " + std::to_string(k) + ": " : "") + *why};
-    n += parts[k].size();
-    reflex += parts[k].reflex_count();
+    totals.add(parts[k]);
   }
   const auto compute = [&] { return run_output(*algo, parts, vm.count("json") > 0, vm.count("no-validate") == 0, !svg.empty()); };
   std::optional<RunOutput> result;
   {
-    const Heartbeat heartbeat(name + " on n = " + std::to_string(n) + ", r = " + std::to_string(reflex) +
+    const Heartbeat heartbeat(name + " on n = " + std::to_string(totals.n) + ", r = " + std::to_string(totals.reflex) +
                               (max_seconds ? " (stops at " + double_text(*max_seconds) + " s)" : ""));
     result = max_seconds ? with_deadline(name, *max_seconds, compute) : compute();
   }
@@ -641,7 +633,8 @@ int cmd_cut(const std::vector<std::string>& args) {
       "vertical", "Theorem 3's vertical chord instead of the diagonal")("json", "JSON output")("help,h", "this help");
   const auto vm = parse("cut", args, opts);
   const std::vector<Polygon> parts = read_input(vm["input"].as<std::string>());
-  if (parts.size() > 1 || parts[0].hole_count() > 0)
+  if (parts.size() > 1) throw Exit{kBadPolygon, "cut takes one polygon, not a multipolygon"};
+  if (parts[0].hole_count() > 0)
     throw Exit{kBadPolygon, "cut takes a polygon without holes: the polygon-cutting theorem is for simple polygons"};
   if (!parts[0].merged().empty())
     throw Exit{kBadPolygon, "cut takes a polygon without repeated vertices (its weights are one per vertex)"};
@@ -669,22 +662,17 @@ int cmd_check(const std::vector<std::string>& args) {
       "json", "JSON output")("help,h", "this help");
   const auto vm = parse("check", args, opts);
   const std::vector<Polygon> parts = read_input(vm["input"].as<std::string>());
-  std::size_t n = 0, reflex = 0, holes = 0, merged = 0;
-  for (const Polygon& p : parts) {
-    n += p.input_size();
-    reflex += p.reflex_count();
-    holes += p.hole_count();
-    merged += p.merged().size();
-  }
+  PolygonTotals t;
+  for (const Polygon& p : parts) t.add(p);
   const bool clockwise = parts[0].input_was_clockwise();
   auto number = [](std::size_t v) { return std::to_string(v); };
-  write_stdout(vm.count("json") ? "{\"n\": " + number(n) + ", \"reflex\": " + number(reflex) + ", \"clockwise\": " +
-                                      json_bool(clockwise) + ", \"holes\": " + number(holes) + ", \"parts\": " +
-                                      number(parts.size()) + ", \"merged\": " + number(merged) + "}\n"
-                                : "polygon: n=" + number(n) + " reflex=" + number(reflex) + " orientation=" +
-                                      (clockwise ? "clockwise" : "counter-clockwise") + count_text("holes", holes, holes > 0) +
+  write_stdout(vm.count("json") ? "{\"n\": " + number(t.n) + ", \"reflex\": " + number(t.reflex) + ", \"clockwise\": " +
+                                      json_bool(clockwise) + ", \"holes\": " + number(t.holes) + ", \"parts\": " +
+                                      number(parts.size()) + ", \"merged\": " + number(t.merged) + "}\n"
+                                : "polygon: n=" + number(t.n) + " reflex=" + number(t.reflex) + " orientation=" +
+                                      (clockwise ? "clockwise" : "counter-clockwise") + count_text("holes", t.holes, t.holes > 0) +
                                       count_text("parts", parts.size(), parts.size() > 1) +
-                                      count_text("merged", merged, merged > 0) + "\n");
+                                      count_text("merged", t.merged, t.merged > 0) + "\n");
   return 0;
 }
 

@@ -11,7 +11,7 @@
 // curves need "h"). Points a family cannot realise (Family::infeasible) are left out of the grid, not
 // reported as errors.
 //
-// Keys run polygon by polygon: by family, then n, then r, then seed, then algorithm. So every polygon
+// Keys run polygon by polygon: by family, then n, then r, then h, then seed, then algorithm. So every polygon
 // is built once, and a grid point runs after every point it dominates (smaller n and smaller r), which
 // is what the budget's prediction needs.
 #pragma once

@@ -122,6 +122,7 @@ TEST(Readers, UnpackedPositionsKeepTheirValues) {
   EXPECT_EQ(parse_polygon("[[0,0,7],[4,0,7],[0,3,7]]"), kTriangle);
   EXPECT_EQ(parse_polygon(R"({"type":"Polygon","coordinates":[[[0,0,1,2],[4,0,1,2],[0,3,1,2]]]})"), kTriangle);
   EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0,"z"],[4,0],[0,3]]]})"), "GeoJSON: a coordinate is not a number");
+  EXPECT_EQ(error_of("[[0,0,1e-400],[1,0,0],[0,1,0]]"), "GeoJSON: '1e-400' is too small for a double (it is not 0)");
 }
 
 TEST(Readers, Wkt) {

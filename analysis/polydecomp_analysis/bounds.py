@@ -168,10 +168,16 @@ class TimeRow:
         return "{} (n {}..{})".format(len(ns), min(ns), max(ns))
 
 
+def _on_n_or_r_curve(run):
+    """Whether the run lies on a curve against n or r: the fits are in n and r, and a curve against
+    the number of holes (vs-h, at one n and r) would only add its scatter in h to them."""
+    return any(not label.startswith("vs-h") for label in run.curves) or not run.curves
+
+
 def time_rows(runs, registry):
     by_key = collections.defaultdict(list)
     for run in runs:
-        if run.timed and run.algorithm in registry:
+        if run.timed and run.algorithm in registry and _on_n_or_r_curve(run):
             by_key[(run.algorithm, run.family)].append(run)
     rows, op_rows = [], []
     for (algorithm, family), group in sorted(by_key.items()):

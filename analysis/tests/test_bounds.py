@@ -201,3 +201,16 @@ class LowerBoundTest(unittest.TestCase):
         self.assertEqual(bounds.lower_bound(run(9, 0)), 6)
         self.assertEqual(bounds.lower_bound(run(9, 4)), 2)
         self.assertEqual(bounds.lower_bound(run(9, 40)), 1)
+
+
+class CurvesAgainstHTest(unittest.TestCase):
+    def test_runs_only_on_a_curve_against_h_stay_out_of_the_fits(self):
+        def run(n, h, curves):
+            return results.Run({"name": "a/convex-holes/n:{}/r:{}/h:{}/seed:1".format(n, n // 2, h), "status": "ok",
+                                "cpu_time": n, "time_unit": "ns", "curves": curves})
+        along_n = [run(n, 4, ["vs-n r=default h=4"]) for n in (100, 200, 400, 800)]
+        along_h = [run(400, h, ["vs-h n=400 r=n/2"]) for h in (1, 2, 8)]
+        registry = {"a": {"time_bound": "n"}}
+        both, _ = bounds.time_rows(along_n + along_h, registry)
+        alone, _ = bounds.time_rows(along_n, registry)
+        self.assertEqual(both[0].fit.points, alone[0].fit.points)

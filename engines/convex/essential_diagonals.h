@@ -28,7 +28,7 @@ namespace essential {
 class Rotations {
  public:
   // Half-edges 2k and 2k + 1 are diagonal k from a to b and back; 2m + 2u and 2m + 2u + 1 are the
-  // polygon edge (u, u+1) and back.
+  // polygon edge (u, next(u)) and back.
   Rotations(const Polygon& p, const std::vector<Cut>& diagonals)
       : n_(p.size()), origin_(2 * (diagonals.size() + n_)), target_(origin_.size()), cw_(origin_.size()),
         ccw_(origin_.size()) {

@@ -352,7 +352,8 @@ namespace {
 
 // The naive search: every polygon edge, the notch's ring walked from the notch's successor round to
 // its predecessor, every other ring (a hole, or the outer ring for a notch of a hole) all round; each
-// vertex placed once.
+// edge tested once (a ring walked all round places its first vertex twice, as its first edge's start
+// and its last edge's end, and offers it once).
 class EveryEdge : public BoundarySearch {
  public:
   explicit EveryEdge(const Polygon& p) : p_(p) {}

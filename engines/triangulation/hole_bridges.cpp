@@ -48,10 +48,10 @@ class Bridger {
   std::uint32_t partner_of(std::uint32_t m) {
     const Point& M = p_[m];
     std::optional<Hit> best;
+    // Two edges crossed at one point are the two walks of one bridge: either gives the same triangle
+    // and the same partner, so the first is kept.
     auto consider = [&](const CGAL::Exact_rational& x, std::uint32_t node, bool at_vertex) {
-      // At one crossing point, an edge with the interior facing M (running upwards) is the one hit.
-      if (!best || x < best->x || (x == best->x && !at_vertex && !best->at_vertex && upwards(node)))
-        best = Hit{x, node, at_vertex};
+      if (!best || x < best->x) best = Hit{x, node, at_vertex};
     };
     std::uint32_t u = 0;
     do {
@@ -70,8 +70,6 @@ class Bridger {
     if (best->at_vertex) return node_seeing(c_.vertex[best->node], M);
     return blocking_or_end(m, best->node);
   }
-
-  bool upwards(std::uint32_t node) const { return at(c_.next[node]).y() > at(node).y(); }
 
   // The edge (e, next e) is hit inside at I: its end P with the larger x, or the vertex in the closed
   // triangle M, I, P nearest the ray in angle (then in distance).

@@ -8,8 +8,8 @@
 // nearest of those on one line). The segment from M to its partner is inside the polygon and meets the
 // boundary only at its ends (Eberly's argument; holes not yet joined lie at x <= M's, outside the
 // triangle), and it becomes two boundary edges of the cycle, walked once each way: the cycle runs
-// partner, M, round the hole (clockwise), M again, the partner again. All tests are exact orient()
-// signs on the input doubles; I is never constructed.
+// partner, M, round the hole (clockwise), M again, the partner again. All tests are exact: orient()
+// signs on the input doubles, and the rays' crossings compared by their x as exact rationals.
 //
 // O(n h) for n vertices and h holes (each bridge scans the cycle once). Without holes the cycle is the
 // polygon's boundary.

@@ -24,7 +24,7 @@ for await (const line of createInterface({ input: process.stdin, crlfDelay: Infi
     const holeIndices = [];
     for (const hole of holes || []) {
       holeIndices.push(points.length);
-      points.push(...hole);
+      for (const point of hole) points.push(point);
     }
     const flat = points.flat();
     const start = process.hrtime.bigint();
