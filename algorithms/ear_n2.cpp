@@ -29,10 +29,7 @@ namespace {
 class EarClipper {
  public:
   EarClipper(const Polygon& p, BridgedCycle cycle)
-      : p_(p), c_(std::move(cycle)), nodes_(c_.vertex.size()), ear_(nodes_, 0), removed_(nodes_, 0),
-        visits_(p.size()) {
-    for (std::uint32_t k = 0; k < nodes_; ++k) visits_[c_.vertex[k]].push_back(k);
-  }
+      : p_(p), c_(std::move(cycle)), nodes_(c_.vertex.size()), ear_(nodes_, 0), removed_(nodes_, 0) {}
 
   Decomposition run(Counters& counters) {
     Decomposition d;
@@ -99,10 +96,8 @@ class EarClipper {
   // (the ray to `diagonal`). Along a triangle side that is a boundary edge is fine: that is a bridge,
   // walked the other way on its other side.
   bool other_visit_enters(std::size_t node, const Point& first, const Point& second, const Point* diagonal) const {
-    const std::vector<std::uint32_t>& visits = visits_[c_.vertex[node]];
-    if (visits.size() == 1) return false;
     const Point& corner = at(node);
-    for (const std::uint32_t other : visits) {
+    for (std::uint32_t other = c_.vertex[node]; other != BridgedCycle::kNoNode; other = c_.visit_after(other)) {
       if (other == node || removed_[other]) continue;
       for (const std::uint32_t end : {c_.prev[other], c_.next[other]}) {
         const Point& q = at(end);
@@ -118,7 +113,6 @@ class EarClipper {
   std::size_t nodes_;
   std::vector<std::size_t> non_convex_;
   std::vector<char> ear_, removed_;
-  std::vector<std::vector<std::uint32_t>> visits_;  // each vertex's nodes
   std::int64_t ear_tests_ = 0, point_tests_ = 0, walk_steps_ = 0;
 };
 

@@ -153,25 +153,18 @@ Rational twice_signed_area(const std::vector<Point>& cycle) {
   return sum;
 }
 
-Rational twice_area(const Polygon& p) {
-  Rational sum = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Point& a = p[i];
-    const Point& b = p[p.next(i)];
-    sum += Rational(a.x()) * Rational(b.y()) - Rational(b.x()) * Rational(a.y());
-  }
-  return sum;
+template <class P, class K>
+bool simple_cycle(const std::vector<P>& cycle, std::string* why) {
+  std::string fault = simplicity_fault<P, K>(cycle, identity_name);
+  if (why) *why = fault;
+  return fault.empty();
 }
 
 bool is_simple_cycle(const std::vector<Point>& cycle, std::string* why) {
-  std::string fault = simplicity_fault<Point, Kernel>(cycle, identity_name);
-  if (why) *why = fault;
-  return fault.empty();
+  return simple_cycle<Point, Kernel>(cycle, why);
 }
 bool is_simple_cycle(const std::vector<QPoint>& cycle, std::string* why) {
-  std::string fault = simplicity_fault<QPoint, ExactKernel>(cycle, identity_name);
-  if (why) *why = fault;
-  return fault.empty();
+  return simple_cycle<QPoint, ExactKernel>(cycle, why);
 }
 
 std::size_t Polygon::reflex_count() const {

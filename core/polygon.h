@@ -113,8 +113,6 @@ std::vector<Polygon> make_parts(std::vector<Rings> parts);
 
 // Twice the signed area of the cycle, exact (positive for counter-clockwise).
 Rational twice_signed_area(const std::vector<Point>& cycle);
-// Twice the polygon's area: the outer ring's less its holes', exact.
-Rational twice_area(const Polygon& p);
 
 // Whether the closed chain through `cycle` is simple: no two non-adjacent edges meet, adjacent edges
 // meet only at their shared vertex, no vertex repeats. O(n log n). On failure, `why` names a witness.

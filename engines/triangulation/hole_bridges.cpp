@@ -106,7 +106,7 @@ class Bridger {
   // when it ends an earlier bridge).
   std::uint32_t node_seeing(VertexId v, const Point& q) const {
     std::uint32_t found = v;
-    for (std::uint32_t node = v; node != kNone; node = copy_after(node))
+    for (std::uint32_t node = v; node != kNone; node = c_.visit_after(node))
       if (in_cone(node, q)) found = node;
     return found;
   }
@@ -117,19 +117,17 @@ class Bridger {
     return orient(a, b, q) > 0 || orient(b, c, q) > 0;
   }
 
-  static constexpr std::uint32_t kNone = ~std::uint32_t(0);
-  // The visits of a vertex, chained: vertex v's node, then its copies in the order they were made.
-  std::uint32_t copy_after(std::uint32_t node) const { return node < copy_next_.size() ? copy_next_[node] : kNone; }
+  static constexpr std::uint32_t kNone = BridgedCycle::kNoNode;
 
   std::uint32_t add_node(VertexId v) {
     const auto node = static_cast<std::uint32_t>(c_.vertex.size());
     c_.vertex.push_back(v);
     c_.next.push_back(kNone);
     c_.prev.push_back(kNone);
-    if (copy_next_.size() < c_.vertex.size()) copy_next_.resize(c_.vertex.size(), kNone);
+    c_.later_visit.resize(c_.vertex.size(), kNone);
     std::uint32_t last = v;
-    while (copy_next_[last] != kNone) last = copy_next_[last];
-    copy_next_[last] = node;
+    while (c_.later_visit[last] != kNone) last = c_.later_visit[last];
+    c_.later_visit[last] = node;
     return node;
   }
 
@@ -140,7 +138,6 @@ class Bridger {
 
   const Polygon& p_;
   BridgedCycle& c_;
-  std::vector<std::uint32_t> copy_next_;
   std::int64_t tests_ = 0;
 };
 

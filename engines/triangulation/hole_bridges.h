@@ -25,9 +25,19 @@ namespace pd {
 // One cycle through every ring: node k is a visit of vertex `vertex[k]`. Nodes 0..n-1 are the
 // vertices themselves; each bridge adds two nodes, second visits of its two ends.
 struct BridgedCycle {
+  static constexpr std::uint32_t kNoNode = ~std::uint32_t(0);
+
   std::vector<VertexId> vertex;
   std::vector<std::uint32_t> next, prev;
   std::vector<Cut> bridges;  // each a diagonal of any triangulation of the cycle
+  // The visits of one vertex, chained from its own node v through the copies in the order they were
+  // made; empty without holes.
+  std::vector<std::uint32_t> later_visit;
+
+  // The visit of the same vertex after `node`, or kNoNode.
+  std::uint32_t visit_after(std::uint32_t node) const {
+    return node < later_visit.size() ? later_visit[node] : kNoNode;
+  }
 };
 
 // Counts the edges and vertices the bridge searches test as "bridge_tests".
