@@ -7,6 +7,7 @@
 #include "core/validate.h"
 #include "engines/naive/naive.h"
 #include "generators/family.h"
+#include "generators/rng.h"
 #include "tests/fixtures.h"
 #include "tests/same_decomposition.h"
 
@@ -202,6 +203,55 @@ TEST(NaiveChains, EqualsNaiveAndKeepsThePseudoNotchBound) {
         }
       }
   EXPECT_GT(cases, 100u);
+}
+
+// Every family's polygon with up to three small triangular holes dropped at random into its box, the
+// ones that land inside and apart kept: outer rings with notches and holes together.
+std::vector<Polygon> family_polygons_with_holes() {
+  std::vector<Polygon> out;
+  Rng rng(33);
+  for (const Family& f : families())
+    for (std::size_t n : {24, 60}) {
+      const std::size_t r = f.default_reflex(n);
+      if (f.infeasible(n, r)) continue;
+      const Ring outer = generate(f.name, n, r, 7);
+      CGAL::Bbox_2 box;
+      for (const Point& q : outer) box += q.bbox();
+      const double w = box.xmax() - box.xmin(), hgt = box.ymax() - box.ymin(), size = std::min(w, hgt) / 40;
+      Rings rings = {outer};
+      for (int trial = 0; trial < 200 && rings.size() < 4; ++trial) {
+        const double x = box.xmin() + w * static_cast<double>(rng.below(1000)) / 1000;
+        const double y = box.ymin() + hgt * static_cast<double>(rng.below(1000)) / 1000;
+        Rings with = rings;
+        with.push_back({{x, y}, {x + size, y + size / 2}, {x + size / 3, y + size}});
+        try {
+          Polygon::make_with_holes(with);
+          rings = with;
+        } catch (const PolygonError&) {
+        }
+      }
+      if (rings.size() > 1) out.push_back(Polygon::make_with_holes(rings));
+    }
+  for (const HoleFamily& f : hole_families())
+    for (std::size_t n : {24, 60, 250}) out.push_back(Polygon::make_with_holes(generate_with_holes(f.name, n, {}, {}, 1)));
+  return out;
+}
+
+// With holes too: the same decomposition as naive's, exactly r + 1 - h pieces, Theorem 3's bound
+// ring by ring.
+TEST(NaiveChains, EqualsNaiveWithHoles) {
+  const std::vector<Polygon> polygons = family_polygons_with_holes();
+  EXPECT_GT(polygons.size(), 15u);
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    const Polygon& p = polygons[k];
+    Counters plain, chained;
+    const Decomposition a = naive_decomposition(p, plain);
+    const Decomposition b = algorithm("naive-chains").run(p, chained);
+    EXPECT_TRUE(same_decomposition(a, b)) << "polygon " << k;
+    EXPECT_TRUE(validate(p, b, Kind::Convex, true).ok) << "polygon " << k;
+    EXPECT_EQ(pieces_of(p, b).size() + p.hole_count(), p.reflex_count() + 1) << "polygon " << k;
+    EXPECT_LE(chained["pseudo_notches"], 2 * (1 + static_cast<std::int64_t>(p.reflex_count()))) << "polygon " << k;
+  }
 }
 
 // Chazelle-Dobkin's STEP 5: completing a decomposition that already has cuts and Steiner points (here

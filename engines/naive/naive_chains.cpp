@@ -40,7 +40,7 @@ class ChainSearch : public naive::BoundarySearch {
       // The notch's own edges are not searched: they are the first edge of one chain and the last of
       // another.
       const std::size_t lo = c.start == shot.notch() ? 1 : 0;
-      const std::size_t hi = (c.start + c.edges) % p_.size() == shot.notch() ? c.edges - 1 : c.edges;
+      const std::size_t hi = boundary::chain_vertex(c, c.edges) == shot.notch() ? c.edges - 1 : c.edges;
       if (lo < hi) search_chain(lo, hi);
     }
   }
@@ -49,7 +49,7 @@ class ChainSearch : public naive::BoundarySearch {
   std::int64_t searches() const { return searches_; }
 
  private:
-  std::size_t id(std::size_t j) const { return boundary::chain_vertex(p_, *chain_, j); }
+  std::size_t id(std::size_t j) const { return boundary::chain_vertex(*chain_, j); }
   const Point& x(std::size_t j) const { return p_[id(j)]; }
 
   void search_chain(std::size_t lo, std::size_t hi) {

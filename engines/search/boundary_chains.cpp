@@ -12,8 +12,8 @@ int exact_sign_of(const Point& p, const Point& q, const Point& r, const Point& s
 
 namespace {
 
-// Figure 2.6 in one pass round the boundary from its first notch: the boundary between two notches is
-// cut greedily into maximal convex chains. A chain from y_s is extended by the next edge while the
+// Figure 2.6 in one pass round a ring from its first notch: the ring between two notches is cut
+// greedily into maximal convex chains. A chain from y_s is extended by the next edge while the
 // polygon y_s .. y_k stays convex; between notches the boundary turns left everywhere, so only its
 // angles at y_s and y_k can be reflex. Until the boundary has turned through more than 180 degrees
 // from the chain's first edge, every vertex is left of every edge's line and those angles need no
@@ -22,14 +22,14 @@ namespace {
 // boundaries. So most vertices cost one predicate, the notch test.
 class ChainBuilder {
  public:
-  explicit ChainBuilder(const Polygon& p) : p_(p) {}
+  ChainBuilder(const Polygon& p, std::size_t ring) : p_(p), begin_(p.ring_begin(ring)), end_(p.ring_end(ring)) {}
 
-  // The notches in index order, and the chains from the first notch on.
-  void build(std::vector<VertexId>& notches, std::vector<Chain>& chains) {
-    const std::size_t n = p_.size();
-    std::size_t first = 0;
-    while (first < n && cross_sign(p_[p_.prev(first)], p_[first], p_[first], p_[p_.next(first)]) >= 0) ++first;
-    if (first == n) return;
+  // The ring's notches in index order, and its chains from its first notch on; false, and nothing
+  // added, when the ring has no notch.
+  bool build(std::vector<VertexId>& notches, std::vector<Chain>& chains) {
+    std::size_t first = begin_;
+    while (first < end_ && cross_sign(p_[p_.prev(first)], p_[first], p_[first], p_[p_.next(first)]) >= 0) ++first;
+    if (first == end_) return false;
     notches.push_back(static_cast<VertexId>(first));
     std::size_t d = first, e = p_.next(first);  // d precedes e
     Edge before(p_[d], p_[e]);
@@ -43,18 +43,21 @@ class ChainBuilder {
       if (t == kUnsettled) t = exact_sign_of(p_[d], p_[e], p_[e], p_[e1], true);
       if (t < 0) notches.push_back(static_cast<VertexId>(e));
       if (t < 0 || !extends(e, e1, t, (after_quadrant - before_quadrant) & 3)) {
-        chains.push_back({s_, distance(s_, e), lead_});
+        chains.push_back(chain_to(e));
         start_chain(e);
       }
       before = after, before_quadrant = after_quadrant;
       d = e, e = e1;
     }
-    chains.push_back({s_, distance(s_, e), lead_});
+    chains.push_back(chain_to(e));
+    return true;
   }
 
  private:
-  std::size_t distance(std::size_t from, std::size_t to) const {
-    return to > from ? to - from : to + p_.size() - from;
+  // The chain from y_s to y_e (the whole ring when they are one vertex).
+  Chain chain_to(std::size_t e) const {
+    const std::size_t size = end_ - begin_, edges = e > s_ ? e - s_ : e + size - s_;
+    return {s_, edges, lead_, end_, size};
   }
 
   void start_chain(std::size_t s) {
@@ -80,6 +83,7 @@ class ChainBuilder {
   }
 
   const Polygon& p_;
+  const std::size_t begin_, end_;
   std::size_t s_ = 0, s1_ = 0, lead_ = 1, quadrants_ = 0;
   bool straight_ = true, within_half_turn_ = true;
 };
@@ -91,13 +95,14 @@ int sign_of(const Rational& v) { return CGAL::sign(v); }
 int exact_cross_sign(const Vec& u, const Vec& v) { return sign_of(u.x() * v.y() - u.y() * v.x()); }
 int exact_dot_sign(const Vec& u, const Vec& v) { return sign_of(u.x() * v.x() + u.y() * v.y()); }
 
-// A convex polygon is one chain: its whole boundary from vertex 0.
-Chain whole_boundary(const Polygon& p) {
+// A ring without a notch is one chain: the whole ring from its first vertex.
+Chain whole_ring(const Polygon& p, std::size_t ring) {
+  const std::size_t b = p.ring_begin(ring), size = p.ring_end(ring) - b;
   std::size_t lead = 1;
-  while (lead < p.size() && cross_sign(p[0], p[1], p[lead], p[p.next(lead)]) == 0 &&
-         dot_sign(p[0], p[1], p[lead], p[p.next(lead)]) > 0)
+  while (lead < size && cross_sign(p[b], p[b + 1], p[b + lead], p[p.next(b + lead)]) == 0 &&
+         dot_sign(p[b], p[b + 1], p[b + lead], p[p.next(b + lead)]) > 0)
     ++lead;
-  return {0, p.size(), lead};
+  return {b, size, lead, b + size, size};
 }
 
 // The sign of an interval when it is settled, else kUnsettled.
@@ -109,19 +114,21 @@ constexpr std::size_t kShortChain = 8;
 }  // namespace
 
 void split_into_chains(const Polygon& p, std::vector<VertexId>& notches, std::vector<Chain>& chains) {
-  ChainBuilder(p).build(notches, chains);
+  for (std::size_t ring = 0; ring < p.ring_count(); ++ring)
+    if (!ChainBuilder(p, ring).build(notches, chains)) chains.push_back(whole_ring(p, ring));
+  if (notches.empty()) chains.clear();
 }
 
 SegmentSearch::SegmentSearch(const Polygon& p, const std::vector<QPoint>& exact) : p_(p), exact_(exact) {
   std::vector<VertexId> notches;
   split_into_chains(p, notches, chains_);
-  if (chains_.empty() && p.size() >= 3) chains_.push_back(whole_boundary(p));
+  if (chains_.empty()) chains_.push_back(whole_ring(p, 0));
   while (leaves_ < chains_.size()) leaves_ *= 2;
   boxes_.assign(2 * leaves_, CGAL::Bbox_2());
   for (std::size_t k = 0; k < chains_.size(); ++k) {
     const Chain& c = chains_[k];
     CGAL::Bbox_2& box = boxes_[leaves_ + k];
-    for (std::size_t j = 0; j <= c.edges; ++j) box += p[chain_vertex(p, c, j)].bbox();
+    for (std::size_t j = 0; j <= c.edges; ++j) box += p[chain_vertex(c, j)].bbox();
   }
   for (std::size_t i = leaves_ - 1; i >= 1; --i) boxes_[i] = boxes_[2 * i] + boxes_[2 * i + 1];
 }
@@ -169,12 +176,11 @@ Interval SegmentSearch::line_side(double x, double y) const {
 
 // Whether chain k, the edges at `skip` left out, meets the segment.
 bool SegmentSearch::chain_meets(std::size_t k, VertexId skip) {
-  const std::size_t n = p_.size();
   const Chain& c = chains_[k];
   chain_ = &c;
   std::size_t skipped[2] = {c.edges, c.edges};  // the chain's own numbers of the edges left out
   if (skip != kNoVertex) {
-    skipped[0] = (p_.prev(skip) + n - c.start) % n, skipped[1] = (skip + n - c.start) % n;
+    skipped[0] = offset_in_chain(c, p_.prev(skip)), skipped[1] = offset_in_chain(c, skip);
     std::sort(skipped, skipped + 2);
   }
   std::size_t lo = 0;

@@ -78,32 +78,44 @@ inline int dot_sign(const Point& p, const Point& q, const Point& r, const Point&
   return exact_sign_of(p, q, r, s, false);
 }
 
-// A convex chain: `edges` edges from polygon vertex `start` on, counter-clockwise, such that every
-// prefix closes into a convex polygon; `lead` of its first edges point the same way as the first.
+// A convex chain: `edges` edges from polygon vertex `start` on, along its ring (the interior on the
+// left), such that every prefix closes into a convex polygon; `lead` of its first edges point the same
+// way as the first. The ring holds vertices ring_end - ring_size .. ring_end - 1.
 struct Chain {
-  std::size_t start, edges, lead;
+  std::size_t start, edges, lead, ring_end, ring_size;
 };
 
 // Polygon vertex j of chain c (j <= c.edges).
-inline std::size_t chain_vertex(const Polygon& p, const Chain& c, std::size_t j) {
+inline std::size_t chain_vertex(const Chain& c, std::size_t j) {
   const std::size_t k = c.start + j;
-  return k < p.size() ? k : k - p.size();
+  return k < c.ring_end ? k : k - c.ring_size;
+}
+
+// The place of polygon vertex v along chain c's ring, counted from the chain's start: below c.edges
+// for the start of one of the chain's edges, and at least c.edges for a vertex off the chain (or of
+// another ring).
+inline std::size_t offset_in_chain(const Chain& c, std::size_t v) {
+  const std::size_t ring_begin = c.ring_end - c.ring_size;
+  if (v < ring_begin || v >= c.ring_end) return c.edges;
+  return v >= c.start ? v - c.start : v + c.ring_size - c.start;
 }
 
 // Angular position of the chain's edge j (from its vertex j to j + 1), measured counter-clockwise from
 // its first edge d0: 0 for [0, 180), 1 for [180, 360), and 2 for an edge that has turned a full circle
 // back to d0's direction. Edges are sorted by (half, angle within the half).
 inline int half_of_edge(const Polygon& p, const Chain& c, std::size_t j) {
-  const Point &x0 = p[chain_vertex(p, c, 0)], &x1 = p[chain_vertex(p, c, 1)];
-  const Point &xj = p[chain_vertex(p, c, j)], &xj1 = p[chain_vertex(p, c, j + 1)];
+  const Point &x0 = p[chain_vertex(c, 0)], &x1 = p[chain_vertex(c, 1)];
+  const Point &xj = p[chain_vertex(c, j)], &xj1 = p[chain_vertex(c, j + 1)];
   const int cross = cross_sign(x0, x1, xj, xj1);
   if (cross != 0) return cross > 0 ? 0 : 1;
   if (dot_sign(x0, x1, xj, xj1) <= 0) return 1;
   return j < c.lead ? 0 : 2;
 }
 
-// Figure 2.6: the notches of p in index order, and the boundary cut between consecutive notches into
-// maximal convex chains, from the first notch on (none when p is convex). O(n).
+// Figure 2.6: the notches of p in index order, and each ring cut between consecutive notches into
+// maximal convex chains, from its first notch on; a ring without a notch (the outer ring, when the
+// holes have all the notches) is one chain from its first vertex. None when p is convex: no shot
+// needs them. O(n).
 void split_into_chains(const Polygon& p, std::vector<VertexId>& notches, std::vector<Chain>& chains);
 
 // Segments with exact rational ends against the chains: O(log k) per chain of k edges, O(r log(n/r))
@@ -148,8 +160,8 @@ class SegmentSearch {
   std::int64_t steps() const { return steps_; }
 
  private:
-  const QPoint& x(std::size_t j) const { return exact_[chain_vertex(p_, *chain_, j)]; }
-  const Point& input(std::size_t j) const { return p_[chain_vertex(p_, *chain_, j)]; }
+  const QPoint& x(std::size_t j) const { return exact_[chain_vertex(*chain_, j)]; }
+  const Point& input(std::size_t j) const { return p_[chain_vertex(*chain_, j)]; }
   int side(std::size_t j);
   int cross_sign_with_u(std::size_t from, std::size_t to, int sense);
   int dot_sign_with_u(std::size_t from, std::size_t to);
