@@ -15,7 +15,7 @@
 // Coordinates: with r <= n/2 the outline has at least as many vertices as all holes together, so a
 // small scale suffices; HoleFamilies.TwoMillionVertices checks that no coordinate reaches 2^31.
 #include "generators/family.h"
-#include "generators/lattice.h"
+#include "generators/hole_grid.h"
 
 namespace pd {
 namespace {
@@ -31,20 +31,6 @@ std::optional<std::string> rh_infeasible(std::size_t n, std::size_t r, std::size
 
 std::size_t default_reflex(std::size_t n, std::size_t h) { return h == 0 ? 0 : std::max(3 * h, n / 2); }
 
-struct Box {
-  std::int64_t x0, y0, x1, y1;
-};
-
-Box box_of(const std::vector<gen::Vec>& v) {
-  Box b{v[0].x, v[0].y, v[0].x, v[0].y};
-  for (const gen::Vec& p : v) b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
-  return b;
-}
-
-void translate(std::vector<gen::Vec>& v, gen::Vec by) {
-  for (gen::Vec& p : v) p = p + by;
-}
-
 // Whether the square [-a, a]^2 lies strictly inside the convex counter-clockwise polygon.
 bool holds_square(const std::vector<gen::Vec>& v, std::int64_t a) {
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -55,51 +41,26 @@ bool holds_square(const std::vector<gen::Vec>& v, std::int64_t a) {
   return true;
 }
 
-Ring points_of(const std::vector<gen::Vec>& v) {
-  Ring ring;
-  ring.reserve(v.size());
-  for (const gen::Vec& p : v) ring.emplace_back(static_cast<double>(p.x), static_cast<double>(p.y));
-  return ring;
-}
-
 Rings make_convex_holes(std::size_t n, std::size_t r, std::size_t h, std::uint64_t seed) {
   Rng rng(seed);
   std::vector<gen::Vec> outline = gen::convex_lattice_polygon(n - r, rng);
   std::rotate(outline.begin(), outline.begin() + static_cast<std::ptrdiff_t>(rng.below(outline.size())), outline.end());
   if (h == 0) {
-    const Box ob = box_of(outline);
-    translate(outline, {-(ob.x0 + ob.x1) / 2, -(ob.y0 + ob.y1) / 2});
-    return {points_of(outline)};
+    const gen::Box ob = gen::box_of(outline);
+    gen::translate(outline, {-(ob.x0 + ob.x1) / 2, -(ob.y0 + ob.y1) / 2});
+    return {gen::points_of(outline)};
   }
   // The centroid of three vertices a third of the way round each is strictly inside; scaled by 3 it
   // is a lattice point, which becomes the origin.
   const std::size_t m = outline.size();
   const gen::Vec centre3 = outline[0] + outline[m / 3] + outline[2 * m / 3];
   for (gen::Vec& p : outline) p = 3 * p - centre3;
-  std::vector<std::vector<gen::Vec>> holes;
-  std::int64_t cell = 0;
-  for (const std::size_t k : gen::balanced_split(r, h, rng)) {
-    holes.push_back(gen::convex_lattice_polygon(k, rng));
-    const Box b = box_of(holes.back());
-    translate(holes.back(), {-b.x0, -b.y0});
-    cell = std::max({cell, b.x1 - b.x0 + 2, b.y1 - b.y0 + 2});
-  }
-  std::int64_t g = 1;
-  while (static_cast<std::size_t>(g * g) < h) ++g;
-  const std::int64_t side = g * cell, half = side / 2 + 1;
+  const gen::HoleGrid grid(r, h, rng);
+  const std::int64_t side = grid.side(), half = side / 2 + 1;
   while (!holds_square(outline, half))
     for (gen::Vec& p : outline) p = 2 * p;  // ends: the origin is strictly inside
-  std::vector<std::size_t> cells(static_cast<std::size_t>(g * g));
-  std::iota(cells.begin(), cells.end(), 0);
-  gen::shuffle(cells, rng);
-  Rings rings = {points_of(outline)};
-  for (std::size_t i = 0; i < h; ++i) {
-    const std::int64_t cx = static_cast<std::int64_t>(cells[i]) % g, cy = static_cast<std::int64_t>(cells[i]) / g;
-    const Box b = box_of(holes[i]);
-    translate(holes[i], {-side / 2 + cx * cell + (cell - b.x1) / 2, -side / 2 + cy * cell + (cell - b.y1) / 2});
-    std::reverse(holes[i].begin(), holes[i].end());
-    rings.push_back(points_of(holes[i]));
-  }
+  Rings rings = {gen::points_of(outline)};
+  for (Ring& hole : grid.placed({-side / 2, -side / 2}, rng)) rings.push_back(std::move(hole));
   return rings;
 }
 

@@ -199,7 +199,7 @@ TEST(Generators, UnknownFamilyNamesTheFamilies) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "unknown family hexagon; families: comb, convex, few-notches, notch-heavy, random, spiral, "
-              "x-pattern, x2-pairs, x4-quads, convex-holes");
+              "x-pattern, x2-pairs, x4-quads, comb-holes, convex-holes");
   }
 }
 
@@ -372,20 +372,25 @@ std::uint64_t fnv1a(const Rings& rings) {
 }
 
 TEST(HoleFamilies, MakeExactlyNRAndHThroughTheCheckedDoor) {
-  ASSERT_EQ(hole_families().size(), 1u);
-  EXPECT_EQ(hole_families()[0].name, "convex-holes");
-  for (const std::size_t n : {6, 7, 24, 100, 1001})
-    for (const std::size_t h : {0, 1, 2, 5, 16}) {
-      const HoleFamily& f = hole_families()[0];
-      const std::size_t r = f.default_reflex(n, h);
-      if (f.infeasible(n, r, h)) continue;
-      const Polygon p = Polygon::make_with_holes(generate_with_holes(f.name, n, r, h, 3));
-      EXPECT_EQ(p.size(), n) << n << " " << h;
-      EXPECT_EQ(p.hole_count(), h) << n << " " << h;
-      EXPECT_EQ(p.reflex_count(), r) << n << " " << h;
-      EXPECT_FALSE(p.input_was_clockwise());
-      for (std::size_t k = 1; k <= h; ++k) EXPECT_FALSE(p.ring_was_reversed(k)) << "holes are written clockwise";
-    }
+  ASSERT_EQ(hole_families().size(), 2u);
+  EXPECT_EQ(hole_families()[0].name, "comb-holes");
+  EXPECT_EQ(hole_families()[1].name, "convex-holes");
+  std::size_t made = 0;
+  for (const HoleFamily& f : hole_families())
+    for (const std::size_t n : {6, 7, 8, 9, 24, 25, 100, 1001})
+      for (const std::size_t h : {0, 1, 2, 5, 16})
+        for (const std::size_t r : {f.default_reflex(n, h), n / 2, n - 5, n - 4}) {
+          if (f.infeasible(n, r, h)) continue;
+          const Polygon p = Polygon::make_with_holes(generate_with_holes(f.name, n, r, h, 3));
+          const std::string label = f.name + " n=" + std::to_string(n) + " r=" + std::to_string(r) + " h=" + std::to_string(h);
+          EXPECT_EQ(p.size(), n) << label;
+          EXPECT_EQ(p.hole_count(), h) << label;
+          EXPECT_EQ(p.reflex_count(), r) << label;
+          EXPECT_FALSE(p.input_was_clockwise()) << label;
+          for (std::size_t k = 1; k <= h; ++k) EXPECT_FALSE(p.ring_was_reversed(k)) << "holes are written clockwise";
+          ++made;
+        }
+  EXPECT_GT(made, 60u);
   const Polygon p = Polygon::make_with_holes(generate_with_holes("convex-holes", 40, 12, 2, 1));
   EXPECT_EQ(p.reflex_count(), 12u);
 }
@@ -408,19 +413,39 @@ TEST(HoleFamilies, RangesAndDefaults) {
   EXPECT_NE(generate_with_holes("convex-holes", 500, 100, 7, 9), generate_with_holes("convex-holes", 500, 100, 7, 10));
 }
 
+TEST(HoleFamilies, CombHolesRangesAndDefaults) {
+  const HoleFamily& f = *find_hole_family("comb-holes");
+  EXPECT_TRUE(f.infeasible(20, 10, 0));   // at least one hole
+  EXPECT_FALSE(f.infeasible(7, 3, 1));    // a rectangle and a triangle
+  EXPECT_TRUE(f.infeasible(7, 4, 1));     // r <= n - 4
+  EXPECT_FALSE(f.infeasible(8, 3, 1));    // the rectangle's corner cut
+  EXPECT_TRUE(f.infeasible(100, 50, 2));  // k = 4 + 0 < 6
+  EXPECT_FALSE(f.infeasible(100, 51, 1)); // k = 6 + 1 >= 3
+  EXPECT_EQ(f.default_holes, 4u);
+  EXPECT_EQ(f.default_reflex(100, 4), 73u);  // k = 50
+  EXPECT_EQ(f.default_reflex(10000, 1024), 7498u);
+  EXPECT_EQ(generate_with_holes("comb-holes", 500, 300, 7, 9), generate_with_holes("comb-holes", 500, 300, 7, 9));
+  EXPECT_NE(generate_with_holes("comb-holes", 500, 300, 7, 9), generate_with_holes("comb-holes", 500, 300, 7, 10));
+}
+
 TEST(HoleFamilies, ChecksumsArePinned) {
   EXPECT_EQ(fnv1a(generate_with_holes("convex-holes", 1000, 500, 4, 1)), 0x1ac3af713f9fd3c7ULL);
   EXPECT_EQ(fnv1a(generate_with_holes("convex-holes", 300, 90, 30, 2)), 0x8efec3661af85110ULL);
+  EXPECT_EQ(fnv1a(generate_with_holes("comb-holes", 1000, 748, 4, 1)), 0x70a0eeecf6f7438fULL);
+  EXPECT_EQ(fnv1a(generate_with_holes("comb-holes", 301, 200, 30, 2)), 0xe525fbe8888e6552ULL);
 }
 
 TEST(HoleFamilies, TwoMillionVertices) {
-  for (const std::size_t h : {1, 1000}) {
-    const Rings rings = generate_with_holes("convex-holes", 2'000'000, 1'000'000, h, 5);
-    ASSERT_EQ(rings.size(), h + 1);
-    std::size_t n = 0;
-    for (const Ring& ring : rings) n += ring.size();
-    EXPECT_EQ(n, 2'000'000u);
-  }
+  for (const HoleFamily& f : hole_families())
+    for (const std::size_t h : {1, 1000}) {
+      const Rings rings = generate_with_holes(f.name, 2'000'000, f.default_reflex(2'000'000, h), h, 5);
+      ASSERT_EQ(rings.size(), h + 1);
+      std::size_t n = 0;
+      for (const Ring& ring : rings) n += ring.size();
+      EXPECT_EQ(n, 2'000'000u);
+    }
+  const Rings one_hole = generate_with_holes("comb-holes", 2'000'000, 1'999'996, 1, 5);  // k = 1,999,996
+  EXPECT_EQ(one_hole[1].size(), 1'999'996u);
 }
 
 }  // namespace

@@ -447,9 +447,11 @@ TEST(HoleFamilies, AreSweptWithHInTheKeys) {
     }
     EXPECT_EQ(j.get("lower_bound")->number(), std::max(1.0, std::floor((r_ + 1) / 2) + 1 - h)) << name;
   }
-  EXPECT_EQ(status.size(), 12u);  // 4 polygons (n 30 and 60 at h 2; h 1 and 3 at n 60) x 3 algorithms
+  // 6 polygons (both families at n 30 and 60, h 2; convex-holes at n 60, h 1 and 3) x 3 algorithms
+  EXPECT_EQ(status.size(), 18u);
   EXPECT_EQ(status.count("monotone/convex-holes/n:60/r:30/h:3/seed:1"), 1u);
   EXPECT_EQ(status.count("monotone/convex-holes/n:30/r:15/h:2/seed:1"), 1u);
+  EXPECT_EQ(status.count("hertel-mehlhorn/comb-holes/n:60/r:43/h:2/seed:1"), 1u);
   const command::Result bad =
       command::run(PD_BENCH " --sweep bad --sweeps " + (dir / "sweeps.json").string() + " --out " + dir.string(), dir);
   EXPECT_EQ(bad.status, 2);
