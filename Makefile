@@ -9,7 +9,7 @@ FUZZ_SECONDS ?= 600
 SANITIZE_CONFIG := -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Test -DPD_TESTS=ON -DPD_SANITIZE=ON -DPD_FUZZ=ON
 PY := /usr/bin/python3
 
-.PHONY: all deps build test sanitize-build fuzz bench paper clean
+.PHONY: all deps build test sanitize-build fuzz corpus bench paper clean
 
 all: build
 
@@ -44,10 +44,17 @@ fuzz: deps
 # A sweep resumes after the keys its journal (DIR/SWEEP.journal.jsonl) already holds; delete the
 # journal to measure everything again. `bench` writes into results/quick/, so that it never overwrites
 # the committed reference run (results/paper.*, bounds.md, plots/).
-bench: build
+# The DCW corpus (corpora/dcw/, one file per country part, and its manifest beside it), built from
+# Debian's gmt-dcw package and never committed; built again when the package's file is newer.
+DCW := /usr/share/gmt-dcw/dcw-gmt.nc
+corpus: build
+	@if [ ! -f corpora/dcw.manifest.json ] || [ $(DCW) -nt corpora/dcw.manifest.json ]; then \
+	  $(PY) scripts/build_dcw_corpus.py --netcdf $(DCW) --out corpora/dcw --build $(BUILD); fi
+
+bench: corpus
 	@$(PY) analysis/sweep.py --sweep quick --build $(BUILD) --results results/quick
 
-paper: build
+paper: corpus
 	@$(PY) analysis/sweep.py --sweep paper --build $(BUILD) --results results
 
 clean:

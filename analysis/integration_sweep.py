@@ -5,7 +5,10 @@
     finished key again, and ends with the same keys and piece counts as an uninterrupted run;
   - two shards merged with merge.py equal one unsharded run in keys, statuses and piece counts;
   - an algorithm's own budget ("budget_seconds_for") replaces the sweep's for that algorithm only;
-  - an unknown sweep or family is refused as such (exit 2), without the advice to resume.
+  - an unknown sweep or family is refused as such (exit 2), without the advice to resume;
+  - a user's folder of polygon files, named in a sweeps file of their own (--sweep-file) as
+    "dir:PATH", runs every algorithm on each file it accepts, each result validated, and lists the
+    files it refuses once, with the reason.
 
 usage: integration_sweep.py --build DIR
 """
@@ -168,6 +171,48 @@ class SweepIntegration(unittest.TestCase):
         done = self.run_sweep(self.workdir("unknown", sweeps), expect_ok=False)
         self.assertNotEqual(done.returncode, 0)
         self.assertIn("budget_seconds_for: unknown algorithm no-such-algorithm", done.stderr)
+
+    def test_a_users_folder_is_swept_and_its_bad_files_listed_once(self):
+        workdir = self.workdir("folder")
+        folder = os.path.join(workdir, "my polygons")
+        os.makedirs(folder)
+        polydecomp = os.path.join(BUILD, "polydecomp")
+        for name, args in (("comb.txt", ["--family", "comb", "--n", "30"]),
+                           ("holes.wkt", ["--family", "convex-holes", "--n", "40", "--holes", "2", "--format", "wkt"])):
+            subprocess.run([polydecomp, "generate", *args, "-o", os.path.join(folder, name)], check=True)
+        bad = {"bowtie.txt": "0 0\n1 1\n0 1\n1 0\n", "garbage.json": "garbage\n",
+               "two.wkt": "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 0)), ((5 5, 6 5, 6 6, 5 5)))\n"}
+        for name, text in bad.items():
+            with open(os.path.join(folder, name), "w", encoding="utf-8") as f:
+                f.write(text)
+        with open(os.path.join(folder, "README.md"), "w", encoding="utf-8") as f:
+            f.write("not a polygon file: not read\n")
+        own = os.path.join(workdir, "mine.json")
+        with open(own, "w", encoding="utf-8") as f:
+            json.dump({"mine": {"description": "a user's folder", "algorithms": ["monotone", "hertel-mehlhorn", "keil"],
+                                "seeds": [1], "min_time": 0.001, "budget_seconds": 5, "timeout_seconds": 60,
+                                "curves": [{"vs": "n", "families": ["dir:my polygons"]}]}}, f)
+        command = [sys.executable, os.path.join(HERE, "sweep.py"), "--sweep", "mine", "--sweep-file", own,
+                   "--build", BUILD, "--results", os.path.join(workdir, "results"), "--no-analysis"]
+        for _ in range(2):  # the second run resumes: nothing to run, the refusals still listed once
+            done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            self.assertEqual(done.returncode, 0, done.stderr)
+        with open(os.path.join(workdir, "results", "mine.json"), encoding="utf-8") as f:
+            doc = json.load(f)
+        self.assertEqual(doc["refused"], [
+            {"file": "my polygons/bowtie.txt", "reason": "not simple: edge 0-1 crosses edge 2-3"},
+            {"file": "my polygons/garbage.json", "reason": "line 1: 'garbage' is not a number"},
+            {"file": "my polygons/two.wkt", "reason": "a multipolygon of 2 parts; a corpus file holds one polygon"}])
+        statuses = {run["name"]: (run["status"], run.get("valid")) for run in doc["benchmarks"]}
+        self.assertEqual(statuses, {
+            "monotone/my polygons/comb.txt/n:30/r:12/h:0": ("ok", 1),
+            "hertel-mehlhorn/my polygons/comb.txt/n:30/r:12/h:0": ("ok", 1),
+            "keil/my polygons/comb.txt/n:30/r:12/h:0": ("ok", 1),
+            "monotone/my polygons/holes.wkt/n:40/r:20/h:2": ("ok", 1),
+            "hertel-mehlhorn/my polygons/holes.wkt/n:40/r:20/h:2": ("ok", 1),
+            "keil/my polygons/holes.wkt/n:40/r:20/h:2": ("skipped", None)})
+        _, runs = results.load(os.path.join(workdir, "results", "mine.json"))
+        self.assertEqual({(run.family, run.file) for run in runs}, {("my polygons", "comb.txt"), ("my polygons", "holes.wkt")})
 
     @staticmethod
     def _finished(journal):

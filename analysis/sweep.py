@@ -5,7 +5,7 @@ files, then (for a whole sweep) the bounds table and the plots.
 polydecomp_analysis/sweep.py says how it keeps polydecomp-bench going when a key ends the process. An
 interrupt (Ctrl-C, SIGTERM) stops it; run the same command again to resume.
 
-usage: sweep.py --sweep NAME [--sweeps FILE] [--shard I/K] [--build DIR] [--results DIR] [--no-analysis]
+usage: sweep.py --sweep NAME [--sweep-file FILE] [--shard I/K] [--build DIR] [--results DIR] [--no-analysis]
                 [--plugins DIR]...
                 [-- extra polydecomp-bench arguments]
 """
@@ -21,7 +21,7 @@ from polydecomp_analysis import plugins, results, sweep
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--sweep", required=True, help="a sweep of harness/sweeps.json, e.g. quick or paper")
-    parser.add_argument("--sweeps", help="another sweeps file")
+    parser.add_argument("--sweep-file", "--sweeps", dest="sweeps", help="another sweeps file (a user's own)")
     parser.add_argument("--shard", help="I/K: run shard I of K (merge the shards with analysis/merge.py)")
     parser.add_argument("--build", default="build")
     parser.add_argument("--results", default="results")

@@ -7,6 +7,7 @@
 // Exit status: 0 the sweep (or shard) is complete; 2 bad usage; kTimeoutExit (75) a key hit the
 // timeout, was journaled as skipped, and the sweep should be run again to go on.
 #include "harness/bench_runner.h"
+#include "core/json.h"
 #include "harness/large_stack.h"
 #include "harness/plugins.h"
 #include "harness/provenance.h"
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <regex>
 #include <string>
 #include <vector>
@@ -42,7 +44,8 @@ po::options_description option_descriptions(Options& o, std::string& shard) {
   po::options_description opts("Options (other --benchmark_* flags go to Google Benchmark; a filter selects keys by name)");
   opts.add_options()("help,h", "this help")(
       "sweep", po::value(&o.sweep)->default_value(o.sweep), "a sweep defined in the sweeps file")(
-      "sweeps", po::value(&o.sweeps_file)->default_value(o.sweeps_file), "the sweeps file")(
+      "sweep-file", po::value(&o.sweeps_file), "the sweeps file, a user's own (default: harness/sweeps.json)")(
+      "sweeps", po::value(&o.sweeps_file), "the same as --sweep-file")(
       "out", po::value(&o.out)->default_value(o.out), "where the journal goes")(
       "shard", po::value(&shard), "I/K: run shard I of K, every K-th polygon of the sweep from the I-th")(
       "plugins", po::value(&o.plugins)->composing(), "a folder of external algorithms' manifests (any number)");
@@ -137,10 +140,26 @@ std::vector<SweepKey> sweep_keys(const Sweep& sweep, const std::vector<SweepPoly
   return keys;
 }
 
+// The progress line while a corpus folder is read (a large one takes a while).
+CorpusProgress corpus_progress(const std::string& sweep) {
+  auto line = std::make_shared<std::unique_ptr<Progress>>();
+  return [sweep, line](std::size_t done, std::size_t total) {
+    if (!*line) *line = std::make_unique<Progress>(sweep + ": reading corpora", total, "files");
+    (*line)->finished("");
+    if (done == total) (*line)->end(), line->reset();
+  };
+}
+
+// The files the corpora refuse, once per invocation: {"refused": "corpus/FILE", "reason": "..."}.
+void journal_refusals(Journal& journal, const Sweep& sweep) {
+  for (const auto& [file, reason] : refused_files(sweep))
+    journal.append("{\"refused\": " + json_quote(file) + ", \"reason\": " + json_quote(reason) + "}");
+}
+
 int run(int argc, char** argv) {
   const Options o = parse_options(argc, argv);
   register_plugins(plugin_folders(o.plugins));
-  const Sweep sweep = load_sweep(o.sweeps_file, o.sweep);
+  const Sweep sweep = load_sweep(o.sweeps_file, o.sweep, corpus_progress(o.sweep));
   initialize_benchmark(o, sweep, argv[0]);
   const KeyFilter filter(benchmark::GetBenchmarkFilter());
 
@@ -148,6 +167,7 @@ int run(int argc, char** argv) {
   const std::string journal_path = stem(o) + ".journal.jsonl";
   const auto finished = Journal::finished(journal_path);
   Journal journal(journal_path);
+  journal_refusals(journal, sweep);
 
   const std::vector<SweepPolygon> polygons = sweep_polygons(sweep);
   const std::vector<SweepKey> keys = sweep_keys(sweep, polygons);

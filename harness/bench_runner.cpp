@@ -1,5 +1,6 @@
 #include "harness/bench_runner.h"
 
+#include "core/io.h"
 #include "core/json.h"
 #include "core/validate.h"
 #include "generators/family.h"
@@ -64,8 +65,16 @@ JsonLine benchmark_context(const benchmark::BenchmarkReporter::Context& c) {
 }
 
 // The budget predicts a key from the keys of its family it dominates in n and r; with holes, from
-// those with as many holes.
-std::string budget_family(const SweepPolygon& p) { return p.h ? p.family + "/h:" + std::to_string(*p.h) : p.family; }
+// those with as many holes; in a corpus, from any of its files.
+std::string budget_family(const SweepPolygon& p) {
+  return p.h && !p.file ? p.family + "/h:" + std::to_string(*p.h) : p.family;
+}
+
+// The polygon of a sweep: generated, or read from its corpus file (which the corpus accepted).
+Polygon polygon_of(const SweepPolygon& p) {
+  if (p.file) return Polygon::make_with_holes(read_parts_file(p.file->path).at(0));
+  return Polygon::make_with_holes(generate_with_holes(p.family, p.n, p.r, p.h, p.seed));
+}
 
 }  // namespace
 
@@ -110,10 +119,10 @@ const SweepRunner::CachedPolygon& SweepRunner::polygon_for(const SweepPolygon& p
   if (cache_.id == p.id()) return cache_;
   cache_ = CachedPolygon{p.id(), std::nullopt, 0, ""};
   try {
-    cache_.polygon = Polygon::make_with_holes(generate_with_holes(p.family, p.n, p.r, p.h, p.seed));
+    cache_.polygon = polygon_of(p);
     cache_.reflex = cache_.polygon->reflex_count();
   } catch (const std::exception& e) {
-    cache_.error = std::string("failed: generator: ") + e.what();
+    cache_.error = std::string(p.file ? "failed: reading: " : "failed: generator: ") + e.what();
   }
   return cache_;
 }

@@ -12,6 +12,7 @@
 #include "core/validate.h"
 #include "engines/cutting/polygon_cutting.h"
 #include "generators/family.h"
+#include "harness/corpus.h"
 #include "harness/large_stack.h"
 #include "harness/last_resort.h"
 #include "harness/plugins.h"
@@ -39,6 +40,7 @@
 #include <functional>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -82,7 +84,8 @@ const char* kUsageText =
     "       polydecomp run --algorithm A --input FILE|- [--json] [--svg FILE] [--no-validate] [--max-seconds S]\n"
     "                      [--max-memory SIZE] [--plugins DIR]...\n"
     "       polydecomp cut --input FILE [--weights reflex|all|FILE] [--vertical] [--json]\n"
-    "       polydecomp check --input FILE|- [--json]\n";
+    "       polydecomp check --input FILE|- [--json]\n"
+    "       polydecomp corpus --dir DIR [--json] | --dir DIR --n N [--rank K] [-o FILE]\n";
 
 // The usage lines of `command` in kUsageText.
 std::string usage_of(const std::string& command) {
@@ -676,8 +679,62 @@ int cmd_check(const std::vector<std::string>& args) {
   return 0;
 }
 
+// A corpus's files, each with its n, r and h or why it is refused (docs/CONTRACT.md, "Corpora").
+std::string corpus_listing(const Corpus& c, bool json) {
+  std::string out;
+  const std::size_t accepted = c.accepted().size(), refused = c.files.size() - accepted;
+  auto number = [](std::size_t v) { return std::to_string(v); };
+  for (const CorpusFile& f : c.files) {
+    if (json) {
+      out += std::string(out.empty() ? "" : ",\n  ") + "{\"file\": " + json_quote(f.name) +
+             (f.refused ? ", \"refused\": " + json_quote(*f.refused)
+                        : ", \"n\": " + number(f.n) + ", \"reflex\": " + number(f.r) + ", \"holes\": " + number(f.h)) +
+             "}";
+    } else {
+      out += quoted_input(f.name) + ": " +
+             (f.refused ? "refused: " + *f.refused : "n=" + number(f.n) + " reflex=" + number(f.r) + " holes=" + number(f.h)) + "\n";
+    }
+  }
+  if (json)
+    return "{\"corpus\": " + json_quote(c.name) + ", \"accepted\": " + number(accepted) + ", \"refused\": " +
+           number(refused) + ", \"files\": [\n  " + out + "]}\n";
+  return out + "corpus " + c.name + ": " + number(c.files.size()) + " files, " + number(accepted) + " accepted, " +
+         number(refused) + " refused\n";
+}
+
+// Lists a folder of polygon files as a sweep reads it, or writes the file nearest to --n vertices.
+int cmd_corpus(const std::vector<std::string>& args) {
+  po::options_description opts;
+  opts.add_options()("dir", po::value<std::string>()->required(), "a folder of polygon files")(
+      "json", "JSON listing")("n", po::value<Count>(), "write the accepted file nearest to N vertices")(
+      "rank", po::value<Count>()->default_value(Count{1}, "1"), "with --n: the K-th nearest")(
+      "output,o", po::value<std::string>()->default_value(""), "with --n: file")("help,h", "this help");
+  const auto vm = parse("corpus", args, opts);
+  Corpus c;
+  try {
+    c = read_corpus(vm["dir"].as<std::string>());
+  } catch (const std::runtime_error& e) {
+    throw Exit{kBadPolygon, e.what()};
+  }
+  if (!vm.count("n")) {
+    write_stdout(corpus_listing(c, vm.count("json") > 0));
+    return 0;
+  }
+  const std::size_t n = vm["n"].as<Count>().value, rank = vm["rank"].as<Count>().value;
+  const CorpusFile* f = c.nearest(n, rank);
+  if (!f)
+    throw Exit{kBadPolygon, "corpus " + c.name + " accepts " + std::to_string(c.accepted().size()) +
+                                " files; there is no " + std::to_string(rank) + "-th nearest to n=" + std::to_string(n)};
+  std::ifstream in(f->path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw Exit{kBadPolygon, "cannot read " + f->path};
+  emit(text.str(), vm["output"].as<std::string>());
+  return 0;
+}
+
 int dispatch(const std::vector<std::string>& argv) {
-  if (argv.empty()) usage("no command; commands: list, generate, run, cut, check ('polydecomp --help' shows their options)");
+  if (argv.empty()) usage("no command; commands: list, generate, run, cut, check, corpus ('polydecomp --help' shows their options)");
   if (argv[0] == "--help" || argv[0] == "-h" || argv[0] == "help") {
     write_stdout(kUsageText);
     return 0;
@@ -688,7 +745,8 @@ int dispatch(const std::vector<std::string>& argv) {
   if (argv[0] == "run") return cmd_run(rest);
   if (argv[0] == "cut") return cmd_cut(rest);
   if (argv[0] == "check") return cmd_check(rest);
-  usage("unknown command " + quoted_input(argv[0]) + "; commands: list, generate, run, cut, check");
+  if (argv[0] == "corpus") return cmd_corpus(rest);
+  usage("unknown command " + quoted_input(argv[0]) + "; commands: list, generate, run, cut, check, corpus");
 }
 
 // The one place a failure becomes its error line and exit status.

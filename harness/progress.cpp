@@ -29,8 +29,8 @@ std::size_t terminal_width() {
 
 }  // namespace
 
-Progress::Progress(std::string title, std::size_t total)
-    : title_(std::move(title)), total_(total), terminal_(isatty(STDERR_FILENO) != 0) {}
+Progress::Progress(std::string title, std::size_t total, std::string unit)
+    : title_(std::move(title)), total_(total), unit_(std::move(unit)), terminal_(isatty(STDERR_FILENO) != 0) {}
 
 double Progress::elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -54,7 +54,7 @@ void Progress::show(const std::string& key, bool force) {
   last_shown_ = t;
   const std::string left = done_ > 0 ? ", ~" + clock_text(t / done_ * (total_ - done_)) + " left" : "";
   const int percent = total_ > 0 ? static_cast<int>(100 * done_ / total_) : 100;
-  std::string line = title_ + ": " + std::to_string(done_) + "/" + std::to_string(total_) + " keys (" +
+  std::string line = title_ + ": " + std::to_string(done_) + "/" + std::to_string(total_) + " " + unit_ + " (" +
                      std::to_string(percent) + "%), " + clock_text(t) + " elapsed" + left + "  " + key;
   if (terminal_) {
     line.resize(std::min(line.size(), terminal_width() - 1));

@@ -10,12 +10,12 @@
 
 namespace pd {
 
-// The sweep's progress line: keys done of total, the current key, time elapsed and an estimate of the
-// time left. On a terminal the line is redrawn in place; otherwise (a log file, a batch job) a new line
+// The sweep's progress line: keys (or other units) done of total, the current key, time elapsed and an
+// estimate of the time left. On a terminal the line is redrawn in place; otherwise (a log file, a batch job) a new line
 // is written at most every ten seconds, so logs stay short.
 class Progress {
  public:
-  Progress(std::string title, std::size_t total);
+  Progress(std::string title, std::size_t total, std::string unit = "keys");
 
   void started(const std::string& key);   // a key begins to run
   void finished(const std::string& key);  // a key is done (run, failed or skipped)
@@ -27,6 +27,7 @@ class Progress {
 
   std::string title_;
   std::size_t total_, done_ = 0;
+  std::string unit_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   double last_shown_ = -1e9;
   bool terminal_;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -92,6 +93,41 @@ std::size_t resolve_reflex(const std::string& rule, std::size_t family_default, 
   return std::stoul(rule);
 }
 
+constexpr const char* kCorpusPrefix = "dir:";
+
+bool names_corpus(const Json* item) {
+  return item->type == Json::Type::String && item->text.rfind(kCorpusPrefix, 0) == 0;
+}
+
+// A curve's corpora: their folders, relative ones read from `base`, the sweeps file's folder.
+std::vector<std::string> select_corpora(const Json& v, const std::string& where, const std::filesystem::path& base) {
+  std::vector<std::string> paths;
+  for (const Json* item : array_items(v, where + " families")) {
+    if (!names_corpus(item)) throw SweepError(where + ": a curve holds corpora (\"dir:PATH\") or families, not both");
+    const std::filesystem::path folder(item->text.substr(std::char_traits<char>::length(kCorpusPrefix)));
+    if (folder.empty()) throw SweepError(where + ": \"dir:\" needs a folder");
+    paths.push_back((folder.is_relative() ? base / folder : folder).lexically_normal().string());
+  }
+  return paths;
+}
+
+bool curve_of_corpora(const Json& families) {
+  return families.is_array() && !families.items.empty() && names_corpus(&families.items[0]);
+}
+
+// A curve of corpora: every file of each ("vs-n corpus"), or with "n" the files nearest to each n
+// ("vs-n nearest").
+Sweep::Curve corpus_curve(const Json& entry, const std::string& where, const std::filesystem::path& base) {
+  if (member(entry, "vs", where).text != "n") throw SweepError(where + ": a curve of corpora is \"vs\": \"n\"");
+  if (entry.get("r") || entry.get("h"))
+    throw SweepError(where + ": a corpus's files have their own r and h; a curve of corpora takes neither \"r\" nor \"h\"");
+  const Json* ns = entry.get("n");
+  Sweep::Curve c{ns ? "vs-n nearest" : "vs-n corpus", select_corpora(member(entry, "families", where), where, base), {}, true};
+  if (ns)
+    for (const Json* v : array_items(*ns, where + " n")) c.points.push_back({count_of(*v, where + " n"), "", std::nullopt});
+  return c;
+}
+
 // The curve's families, and whether they are the families with holes (a curve holds one kind).
 std::vector<std::string> select_families(const Json& v, const std::string& where, bool& with_holes) {
   std::vector<std::string> names;
@@ -107,6 +143,7 @@ std::vector<std::string> select_families(const Json& v, const std::string& where
   }
   std::size_t holed = 0;
   for (const Json* item : array_items(v, where + " families")) {
+    if (names_corpus(item)) throw SweepError(where + ": a curve holds corpora (\"dir:PATH\") or families, not both");
     const bool known = item->type == Json::Type::String && (find_family(item->text) || find_hole_family(item->text));
     if (!known) throw SweepError(where + ": unknown family " + (item->type == Json::Type::String ? item->text : "?"));
     names.push_back(item->text);
@@ -148,7 +185,8 @@ std::vector<std::string> select_algorithms(const Json* v, const std::string& whe
 // {"vs": "r", "n": [...], "r": [rules]} is one curve per n. For the families with holes "h": [...]
 // is required: "vs": "n" and "vs": "r" give one curve per h as well, and {"vs": "h", "n": [...],
 // "r": [rules], "h": [...]} one curve per n and rule.
-std::vector<Sweep::Curve> expand_curves(const Json& entry, const std::string& where) {
+std::vector<Sweep::Curve> expand_curves(const Json& entry, const std::string& where, const std::filesystem::path& base) {
+  if (curve_of_corpora(member(entry, "families", where))) return {corpus_curve(entry, where, base)};
   const Json& vs = member(entry, "vs", where);
   if (vs.type != Json::Type::String || (vs.text != "n" && vs.text != "r" && vs.text != "h"))
     throw SweepError(where + ": \"vs\" must be \"n\", \"r\" or \"h\"");
@@ -203,16 +241,37 @@ std::string sweep_names(const Json& root) {
   return names;
 }
 
+// Reads every corpus the curves name, once; two corpora of one name would give their keys one name.
+void read_corpora(Sweep& s, const std::string& where, const CorpusProgress& progress) {
+  std::map<std::string, std::string> path_of_name;
+  for (const Sweep::Curve& c : s.curves) {
+    if (!c.corpora) continue;
+    for (const std::string& path : c.families) {
+      if (s.corpora.count(path)) continue;
+      try {
+        s.corpora[path] = read_corpus(path, progress);
+      } catch (const std::runtime_error& e) {
+        throw SweepError(where + ": " + e.what());
+      }
+      const std::string& name = s.corpora[path].name;
+      if (path_of_name.count(name))
+        throw SweepError(where + ": corpora " + path_of_name[name] + " and " + path + " have one name, " + name);
+      path_of_name[name] = path;
+    }
+  }
+}
+
 }  // namespace
 
 std::string SweepPolygon::id() const {
-  return family + "/n:" + std::to_string(n) + "/r:" + std::to_string(r) + (h ? "/h:" + std::to_string(*h) : "") +
-         "/seed:" + std::to_string(seed);
+  const std::string size = "/n:" + std::to_string(n) + "/r:" + std::to_string(r);
+  if (file) return family + "/" + file->name + size + "/h:" + std::to_string(file->h);
+  return family + size + (h ? "/h:" + std::to_string(*h) : "") + "/seed:" + std::to_string(seed);
 }
 
 std::string default_sweeps_file() { return PD_SOURCE_DIR "/harness/sweeps.json"; }
 
-Sweep load_sweep(const std::string& path, const std::string& name) {
+Sweep load_sweep(const std::string& path, const std::string& name, const CorpusProgress& progress) {
   Json root;
   try {
     root = parse_json(read_file(path));
@@ -234,9 +293,21 @@ Sweep load_sweep(const std::string& path, const std::string& name) {
   s.timeout_seconds = positive_number(*spec, "timeout_seconds", where);
   const auto entries = array_items(member(*spec, "curves", where), where + " curves");
   for (std::size_t i = 0; i < entries.size(); ++i)
-    for (Sweep::Curve& c : expand_curves(*entries[i], where + " curve " + std::to_string(i + 1)))
+    for (Sweep::Curve& c : expand_curves(*entries[i], where + " curve " + std::to_string(i + 1),
+                                         std::filesystem::path(path).parent_path()))
       s.curves.push_back(std::move(c));
+  read_corpora(s, where, progress);
   return s;
+}
+
+std::vector<std::pair<std::string, std::string>> refused_files(const Sweep& sweep) {
+  std::map<std::string, const Corpus*> by_name;
+  for (const auto& [path, corpus] : sweep.corpora) by_name[corpus.name] = &corpus;
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& [name, corpus] : by_name)
+    for (const CorpusFile& f : corpus->files)
+      if (f.refused) out.emplace_back(name + "/" + f.name, *f.refused);
+  return out;
 }
 
 // The r of a grid point, or nothing when the family cannot realise the point.
@@ -253,24 +324,47 @@ std::optional<std::size_t> feasible_reflex(const std::string& family_name, const
 }
 
 std::vector<SweepPolygon> sweep_polygons(const Sweep& sweep) {
-  using Key = std::tuple<std::string, std::size_t, std::size_t, std::optional<std::size_t>, std::uint64_t>;
+  // By family (or corpus), n, r, h, seed, then file name.
+  using Key = std::tuple<std::string, std::size_t, std::size_t, std::optional<std::size_t>, std::uint64_t, std::string>;
   std::map<Key, std::vector<std::string>> grid;
+  std::map<Key, const CorpusFile*> files;
+  const auto add = [&](const Key& key, const std::string& label) {
+    auto& curves = grid[key];
+    if (std::find(curves.begin(), curves.end(), label) == curves.end()) curves.push_back(label);
+  };
   for (const Sweep::Curve& curve : sweep.curves) {
+    if (curve.corpora) {
+      for (const std::string& path : curve.families) {
+        const Corpus& c = sweep.corpora.at(path);
+        std::vector<const CorpusFile*> chosen = c.accepted();
+        if (!curve.points.empty()) {
+          chosen.clear();
+          for (const Sweep::GridPoint& at : curve.points)
+            for (std::uint64_t seed : sweep.seeds)
+              if (const CorpusFile* f = c.nearest(at.n, seed)) chosen.push_back(f);
+        }
+        for (const CorpusFile* f : chosen) {
+          const Key key{c.name, f->n, f->r, f->h, 0, f->name};
+          files[key] = f;
+          add(key, curve.label);
+        }
+      }
+      continue;
+    }
     for (const std::string& family_name : curve.families) {
       for (const Sweep::GridPoint& at : curve.points) {
         const std::optional<std::size_t> r = feasible_reflex(family_name, at);
         if (!r) continue;
-        for (std::uint64_t seed : sweep.seeds) {
-          auto& curves = grid[{family_name, at.n, *r, at.h, seed}];
-          if (std::find(curves.begin(), curves.end(), curve.label) == curves.end()) curves.push_back(curve.label);
-        }
+        for (std::uint64_t seed : sweep.seeds) add({family_name, at.n, *r, at.h, seed, ""}, curve.label);
       }
     }
   }
   std::vector<SweepPolygon> polygons;
-  for (auto& [key, curves] : grid)
+  for (auto& [key, curves] : grid) {
+    const auto file = files.find(key);
     polygons.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), std::get<3>(key), std::get<4>(key),
-                        std::move(curves)});
+                        std::move(curves), file == files.end() ? nullptr : file->second});
+  }
   return polygons;
 }
 

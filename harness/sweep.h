@@ -1,6 +1,7 @@
 // Sweeps: named grids of (algorithm, family, n, r, seed) keys, and (algorithm, family, n, r, h, seed)
-// for the families with holes, read from one JSON file (harness/sweeps.json), and the deterministic
-// list of keys a sweep (or one shard of it) runs.
+// for the families with holes, and the files of corpora (folders of polygon files, harness/corpus.h),
+// read from one JSON file (harness/sweeps.json, or a user's own), and the deterministic list of keys a
+// sweep (or one shard of it) runs.
 //
 // A sweep is a set of curves. A curve is an axis and a grid: time versus n (a list of n, one curve per
 // reflex rule, and per number of holes), time versus r (a list of reflex rules, one curve per n and
@@ -11,10 +12,18 @@
 // curves need "h"). Points a family cannot realise (Family::infeasible) are left out of the grid, not
 // reported as errors.
 //
+// A curve of corpora, {"vs": "n", "families": ["dir:PATH", ...]}, takes every file each folder accepts
+// (curve "vs-n corpus"); with "n": [...] it takes, for each n and seed s, the file s-th nearest to n
+// vertices (curve "vs-n nearest"), so that a corpus serves the n-curves. A relative PATH is read from
+// the sweeps file's folder. Its keys are "algorithm/CORPUS/FILE/n:N/r:R/h:H", n, r and h the file's own;
+// the files a folder refuses are listed once (Sweep::refused), never run.
+//
 // Keys run polygon by polygon: by family, then n, then r, then h, then seed, then algorithm. So every polygon
 // is built once, and a grid point runs after every point it dominates (smaller n and smaller r), which
 // is what the budget's prediction needs.
 #pragma once
+
+#include "harness/corpus.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -49,23 +58,27 @@ struct Sweep {
     std::optional<std::size_t> h;   // the number of holes, for the families with holes
   };
   struct Curve {
-    std::string label;  // e.g. "vs-n r=default", "vs-r n=1000", "vs-h n=1000 r=n/2"
-    std::vector<std::string> families;
-    std::vector<GridPoint> points;
+    std::string label;  // e.g. "vs-n r=default", "vs-r n=1000", "vs-h n=1000 r=n/2", "vs-n corpus"
+    std::vector<std::string> families;  // or, for a curve of corpora, their paths
+    std::vector<GridPoint> points;      // for a curve of corpora, the n of "vs-n nearest" (no rule)
+    bool corpora = false;
   };
   std::vector<Curve> curves;
+  std::map<std::string, Corpus> corpora;  // by path, as the curves name them
 };
 
-// One polygon of a sweep: a family at (n, r), and h for a family with holes, with a seed, and the
-// curves it lies on.
+// One polygon of a sweep: a family at (n, r), and h for a family with holes, with a seed, or a file of
+// a corpus (family: the corpus's name; seed 0), and the curves it lies on.
 struct SweepPolygon {
   std::string family;
   std::size_t n, r;
   std::optional<std::size_t> h;
   std::uint64_t seed;
   std::vector<std::string> curves;
+  const CorpusFile* file = nullptr;
 
-  std::string id() const;  // "family/n:N/r:R/seed:S", or "family/n:N/r:R/h:H/seed:S"
+  // "family/n:N/r:R/seed:S", "family/n:N/r:R/h:H/seed:S", or "corpus/FILE/n:N/r:R/h:H".
+  std::string id() const;
 };
 
 struct Shard {
@@ -75,9 +88,13 @@ struct Shard {
 // harness/sweeps.json of the source tree this program was built from.
 std::string default_sweeps_file();
 
-// Reads sweep `name` from the JSON file at `path`. Throws SweepError naming the problem (unknown
-// sweep, family or algorithm; a malformed rule), listing the sweeps the file defines.
-Sweep load_sweep(const std::string& path, const std::string& name);
+// Reads sweep `name` from the JSON file at `path`, and the folders of its corpora (`progress` as
+// read_corpus's). Throws SweepError naming the problem (unknown sweep, family or algorithm; a malformed
+// rule; a corpus folder that cannot be read), listing the sweeps the file defines.
+Sweep load_sweep(const std::string& path, const std::string& name, const CorpusProgress& progress = {});
+
+// The files the sweep's corpora refuse: "corpus/FILE" and the reason, in corpus then name order.
+std::vector<std::pair<std::string, std::string>> refused_files(const Sweep& sweep);
 
 // The sweep's polygons in run order, without duplicates and without infeasible points.
 std::vector<SweepPolygon> sweep_polygons(const Sweep& sweep);

@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(build-essential clang libclang-rt-14-dev cmake git libcgal-dev libgeos-dev libgmp-dev libmpfr-dev
           libboost-dev libboost-program-options-dev libbenchmark-dev libgtest-dev googletest nlohmann-json3-dev
           python3 python3-matplotlib python3-numpy python3-flake8
+          gmt-dcw python3-netcdf4   # the DCW corpus (make corpus: scripts/build_dcw_corpus.py)
           procps   # pgrep, with which the orphan test finds a killed run's child
           nodejs)  # node runs the JavaScript peers (peers/*.json); any installed nodejs package counts
 missing=()

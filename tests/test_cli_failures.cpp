@@ -67,7 +67,7 @@ class CliFailures : public ::testing::Test {
 };
 
 const std::vector<std::string> kEveryOutput = {
-    "list", "list --json", "list --markdown", "generate --family convex --n 5", "--help", "run --help",
+    "list", "list --json", "list --markdown", "generate --family convex --n 5", "--help", "run --help", "corpus --help",
 };
 
 TEST_F(CliFailures, EveryWriteToAFullDeviceOrAClosedStdoutFails) {

@@ -16,24 +16,33 @@ import re
 
 _KEY = re.compile(r"^(?P<algorithm>[^/]+)/(?P<family>[^/]+)/n:(?P<n>\d+)/r:(?P<r>\d+)(?:/h:(?P<h>\d+))?"
                   r"/seed:(?P<seed>\d+)$")
+_CORPUS_KEY = re.compile(r"^(?P<algorithm>[^/]+)/(?P<family>[^/]+)/(?P<file>[^/]+)/n:(?P<n>\d+)/r:(?P<r>\d+)"
+                         r"/h:(?P<h>\d+)$")
 _TIME_UNITS = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
-_CSV_COLUMNS = ["key_index", "name", "algorithm", "family", "n", "r", "h", "seed", "status", "reason", "iterations",
+_CSV_COLUMNS = ["key_index", "name", "algorithm", "family", "file", "n", "r", "h", "seed", "status", "reason",
+                "iterations",
                 "real_time_s", "cpu_time_s", "pieces", "steiner", "lower_bound", "valid", "curves"]
 
 
 def parse_key(name):
-    """{"algorithm", "family", "n", "r", "h", "seed"} of a key name, or None; h is 0 for a family
-    without holes (whose keys have no h:)."""
+    """{"algorithm", "family", "file", "n", "r", "h", "seed"} of a key name, or None; h is 0 for a
+    family without holes (whose keys have no h:); a corpus's key (algorithm/CORPUS/FILE/n:/r:/h:) has
+    the corpus as its family, its file, and seed 0; a generated key has file None."""
     m = _KEY.match(name)
-    if not m:
-        return None
-    return {"algorithm": m["algorithm"], "family": m["family"], "n": int(m["n"]), "r": int(m["r"]),
-            "h": int(m["h"] or 0), "seed": int(m["seed"])}
+    if m:
+        return {"algorithm": m["algorithm"], "family": m["family"], "file": None, "n": int(m["n"]),
+                "r": int(m["r"]), "h": int(m["h"] or 0), "seed": int(m["seed"])}
+    m = _CORPUS_KEY.match(name)
+    if m:
+        return {"algorithm": m["algorithm"], "family": m["family"], "file": m["file"], "n": int(m["n"]),
+                "r": int(m["r"]), "h": int(m["h"]), "seed": 0}
+    return None
 
 
-def read_journal(path):
-    """(contexts, runs by name, started keys without a run) of one journal. A torn line (a crash in
-    the middle of a write) is skipped; a later run of a key replaces an earlier one."""
+def read_journal(path, refused=None):
+    """(contexts, runs by name, started keys without a run) of one journal, and into `refused` (a dict,
+    when given) the corpus files the sweep refused, by "corpus/FILE", with the reason. A torn line (a
+    crash in the middle of a write) is skipped; a later run of a key replaces an earlier one."""
     contexts, runs, started = [], {}, {}
     with open(path, encoding="utf-8") as f:
         for line in f:
@@ -45,6 +54,9 @@ def read_journal(path):
                 contexts.append(obj["context"])
             elif "started" in obj:
                 started[obj["started"]] = obj
+            elif "refused" in obj:
+                if refused is not None:
+                    refused[obj["refused"]] = obj.get("reason", "")
             elif "name" in obj:
                 runs[obj["name"]] = obj
     unfinished = [s for name, s in started.items() if name not in runs]
@@ -96,16 +108,20 @@ def _versions(contexts):
 
 
 def assemble(journal_paths, stem, extra_context=None):
-    """Writes STEM.json and STEM.csv from the journals; returns the number of keys."""
-    contexts, runs = [], {}
+    """Writes STEM.json and STEM.csv from the journals; returns the number of keys. The corpus files the
+    sweep refused go into the JSON once each, as "refused": [{"file": "corpus/FILE", "reason": ...}]."""
+    contexts, runs, refused = [], {}, {}
     for path in journal_paths:
-        c, r, _ = read_journal(path)
+        c, r, _ = read_journal(path, refused)
         contexts += c
         runs.update(r)
     context = merge_contexts(contexts)
     context.update(extra_context or {})
     ordered = sorted(runs.values(), key=lambda run: (run.get("key_index", -1), run["name"]))
-    write_atomic(stem + ".json", json.dumps({"context": context, "benchmarks": ordered}, indent=1) + "\n")
+    doc = {"context": context, "benchmarks": ordered}
+    if refused:
+        doc["refused"] = [{"file": name, "reason": why} for name, why in sorted(refused.items())]
+    write_atomic(stem + ".json", json.dumps(doc, indent=1) + "\n")
     write_atomic(stem + ".csv", to_csv(ordered))
     return len(ordered)
 
@@ -138,8 +154,8 @@ def to_csv(runs):
                "reason": reason(run), "iterations": run.get("iterations", ""),
                "real_time_s": repr(seconds(run)), "cpu_time_s": repr(seconds(run, "cpu_time")),
                "curves": ";".join(run.get("curves", []))}
-        for field in ("algorithm", "family", "n", "r", "h", "seed"):
-            row[field] = key.get(field, "")
+        for field in ("algorithm", "family", "file", "n", "r", "h", "seed"):
+            row[field] = key.get(field) if key.get(field) is not None else ""
         for field in ("n", "r", "pieces", "steiner", "lower_bound", "valid") + tuple(ops):
             if field in run:
                 row[field] = _integer_text(run[field])
@@ -157,7 +173,7 @@ class Run:
     def __init__(self, obj):
         key = parse_key(obj["name"])
         self.name = obj["name"]
-        self.algorithm, self.family, self.seed = key["algorithm"], key["family"], key["seed"]
+        self.algorithm, self.family, self.seed, self.file = key["algorithm"], key["family"], key["seed"], key["file"]
         self.n = int(obj.get("n", key["n"]))
         self.r = int(obj.get("r", key["r"]))
         self.h = int(obj.get("h", key["h"]))
@@ -174,7 +190,7 @@ class Run:
     @property
     def polygon(self):
         """The polygon's identity, shared by every algorithm run on it."""
-        return (self.family, self.n, self.r, self.h, self.seed)
+        return (self.family, self.n, self.r, self.h, self.seed, self.file)
 
     @property
     def timed(self):
@@ -182,8 +198,8 @@ class Run:
 
 
 def load(path):
-    """(context, [Run]) of an assembled results file; keys not named algorithm/family/n:/r:/seed: are
-    ignored (e.g. a hand-added Google Benchmark entry)."""
+    """(context, [Run]) of an assembled results file; keys not named algorithm/family/n:/r:/seed: or
+    algorithm/corpus/file/n:/r:/h: are ignored (e.g. a hand-added Google Benchmark entry)."""
     with open(path, encoding="utf-8") as f:
         doc = json.load(f)
     runs = [Run(b) for b in doc.get("benchmarks", []) if parse_key(b.get("name", ""))]

@@ -36,7 +36,7 @@ def stem(args):
 def bench_command(args):
     command = [os.path.join(args.build, "polydecomp-bench"), "--sweep", args.sweep, "--out", args.results]
     if args.sweeps:
-        command += ["--sweeps", args.sweeps]
+        command += ["--sweep-file", args.sweeps]
     if args.shard:
         command += ["--shard", args.shard]
     return command + args.bench_args
