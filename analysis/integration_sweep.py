@@ -212,7 +212,8 @@ class SweepIntegration(unittest.TestCase):
             "hertel-mehlhorn/my polygons/holes.wkt/n:40/r:20/h:2": ("ok", 1),
             "keil/my polygons/holes.wkt/n:40/r:20/h:2": ("skipped", None)})
         _, runs = results.load(os.path.join(workdir, "results", "mine.json"))
-        self.assertEqual({(run.family, run.file) for run in runs}, {("my polygons", "comb.txt"), ("my polygons", "holes.wkt")})
+        self.assertEqual({(run.family, run.file) for run in runs},
+                         {("my polygons", "comb.txt"), ("my polygons", "holes.wkt")})
 
     @staticmethod
     def _finished(journal):

@@ -323,6 +323,21 @@ std::optional<std::size_t> feasible_reflex(const std::string& family_name, const
   return r;
 }
 
+namespace {
+
+// The files of corpus c on a curve of corpora: every accepted one, or the seed-th nearest to each n.
+std::vector<const CorpusFile*> chosen_files(const Corpus& c, const Sweep::Curve& curve,
+                                            const std::vector<std::uint64_t>& seeds) {
+  if (curve.points.empty()) return c.accepted();
+  std::vector<const CorpusFile*> chosen;
+  for (const Sweep::GridPoint& at : curve.points)
+    for (std::uint64_t seed : seeds)
+      if (const CorpusFile* f = c.nearest(at.n, seed)) chosen.push_back(f);
+  return chosen;
+}
+
+}  // namespace
+
 std::vector<SweepPolygon> sweep_polygons(const Sweep& sweep) {
   // By family (or corpus), n, r, h, seed, then file name.
   using Key = std::tuple<std::string, std::size_t, std::size_t, std::optional<std::size_t>, std::uint64_t, std::string>;
@@ -336,14 +351,7 @@ std::vector<SweepPolygon> sweep_polygons(const Sweep& sweep) {
     if (curve.corpora) {
       for (const std::string& path : curve.families) {
         const Corpus& c = sweep.corpora.at(path);
-        std::vector<const CorpusFile*> chosen = c.accepted();
-        if (!curve.points.empty()) {
-          chosen.clear();
-          for (const Sweep::GridPoint& at : curve.points)
-            for (std::uint64_t seed : sweep.seeds)
-              if (const CorpusFile* f = c.nearest(at.n, seed)) chosen.push_back(f);
-        }
-        for (const CorpusFile* f : chosen) {
+        for (const CorpusFile* f : chosen_files(c, curve, sweep.seeds)) {
           const Key key{c.name, f->n, f->r, f->h, 0, f->name};
           files[key] = f;
           add(key, curve.label);

@@ -242,6 +242,73 @@ def piece_rows(runs, registry):
             if name in registry]
 
 
+def corpus_rows(runs, refused):
+    """Per corpus (a family whose keys name files): [corpus, polygons swept, n range, with holes, files
+    refused]."""
+    polygons = collections.defaultdict(set)
+    for run in runs:
+        if run.file is not None:
+            polygons[run.family].add(run.polygon)
+    refused_by = collections.Counter(item["file"].split("/")[0] for item in refused)
+    rows = []
+    for corpus in sorted(set(polygons) | set(refused_by)):
+        ps = polygons[corpus]
+        sizes = "{}..{}".format(min(p[1] for p in ps), max(p[1] for p in ps)) if ps else "-"
+        rows.append([corpus, len(ps), sizes, sum(1 for p in ps if p[3] > 0), refused_by[corpus]])
+    return rows
+
+
+def optimum_ratio_rows(runs, registry):
+    """On the real polygons (corpus keys), every convex decomposition's pieces against the optimum of
+    its rules: diagonal-only algorithms against the fewest pieces of polydecomp's own optimal
+    diagonal-only programs, the others against its optimal programs with Steiner points (peers' optimal
+    programs are not taken as OPT: CGAL's has known bugs). Per algorithm: [algorithm, polygons,
+    mean ratio, median, worst (where)], only on polygons where such an optimum finished validly."""
+    real = [run for run in runs if run.file is not None and run.status == "ok" and run.pieces is not None]
+    optimum = {}
+    for run in real:
+        algo = registry.get(run.algorithm)
+        if algo and algo["kind"] == "convex" and algo["optimal"] and not is_peer(algo):
+            key = (run.polygon, algo["steiner"])
+            optimum[key] = min(optimum.get(key, run.pieces), run.pieces)
+    ratios = collections.defaultdict(list)
+    for run in real:
+        algo = registry.get(run.algorithm)
+        if not algo or algo["kind"] != "convex" or (algo["optimal"] and not is_peer(algo)):
+            continue
+        opt = optimum.get((run.polygon, algo["steiner"]))
+        if opt:
+            ratios[run.algorithm].append((run.pieces / opt, run.name))
+    rows = []
+    for name, values in sorted(ratios.items()):
+        worst = max(values)
+        rows.append([name, len(values), "{:.3f}".format(statistics.mean(v for v, _ in values)),
+                     "{:.3f}".format(statistics.median(v for v, _ in values)),
+                     "{:.3f} ({})".format(worst[0], worst[1])])
+    return rows
+
+
+def _real_polygons_section(runs, registry, refused):
+    corpora = corpus_rows(runs, refused)
+    if not corpora:
+        return "No corpus in these results."
+    ratios = optimum_ratio_rows(runs, registry)
+    return "\n".join([
+        "The corpora's polygons are real outlines (docs/corpora.md); their time fits are in the tables",
+        "above, a corpus as a family. The files a corpus refused (listed in the results file's \"refused\")",
+        "never ran.",
+        "",
+        _table(["corpus", "polygons", "n", "with holes", "files refused"], corpora),
+        "",
+        "Convex pieces against the optimum, on the real polygons where an optimal program of",
+        "polydecomp's own finished in its budget (diagonal-only algorithms against the optimal",
+        "diagonal-only programs, the others against Chazelle-Dobkin's with Steiner points; no optimal",
+        "program takes holes, so polygons with holes are not here):",
+        "",
+        _table(["algorithm", "polygons", "mean ratio", "median", "worst"], ratios) if ratios else "None.",
+    ])
+
+
 PEER = "cgal-cdt"  # the CGAL peer every triangulation is timed against, polygon by polygon
 PEER_SIZES = (100000, 1000000)  # the sizes of the comparison (issue 4: "at n = 10^5 and 10^6")
 
@@ -434,7 +501,7 @@ def _date_range(text):
     return dates[0] if len(dates) == 1 else "{} to {}".format(dates[0], dates[-1])
 
 
-def render(context, registry, times, ops, pieces, runs, source):
+def render(context, registry, times, ops, pieces, runs, source, refused=()):
     by_algorithm = collections.defaultdict(list)
     for row in times:
         by_algorithm[row.algorithm].append(row)
@@ -492,6 +559,10 @@ def render(context, registry, times, ops, pieces, runs, source):
                  p.counts["skipped"], "{:.3f}".format(p.worst_ratio) if p.worst_ratio else "-", p.verdict]
                 for p in pieces]),
         "",
+        "## Real polygons",
+        "",
+        _real_polygons_section(runs, registry, refused),
+        "",
         "## Against {}".format(PEER),
         "",
         _peer_section(peer_rows(runs, registry)) if PEER in registry else "{} is not registered.".format(PEER),
@@ -526,5 +597,6 @@ def write_bounds(results_path, registry, out_path):
     context, runs = results.load(results_path)
     times, ops = time_rows(runs, registry)
     pieces = piece_rows(runs, registry)
-    results.write_atomic(out_path, render(context, registry, times, ops, pieces, runs, results_path))
+    results.write_atomic(out_path, render(context, registry, times, ops, pieces, runs, results_path,
+                                          results.load_refused(results_path)))
     return times, ops, pieces

@@ -197,6 +197,12 @@ class Run:
         return self.status in ("ok", "invalid")
 
 
+def load_refused(path):
+    """The corpus files a results file lists as refused: [{"file": "corpus/FILE", "reason": ...}]."""
+    with open(path, encoding="utf-8") as f:
+        return json.load(f).get("refused", [])
+
+
 def load(path):
     """(context, [Run]) of an assembled results file; keys not named algorithm/family/n:/r:/seed: or
     algorithm/corpus/file/n:/r:/h: are ignored (e.g. a hand-added Google Benchmark entry)."""

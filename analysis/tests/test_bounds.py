@@ -160,8 +160,8 @@ class BoundsTest(SyntheticSweep):
 
     def test_an_invalid_result_is_not_a_reference(self):
         best = bounds.best_pieces(self.runs, self.registry)
-        self.assertEqual(best[(("random", 200, 50, 0, 1), "convex", False)], 101)  # opt's 26 was invalid
-        self.assertEqual(best[(("random", 200, 50, 0, 2), "convex", False)], 26)
+        self.assertEqual(best[(("random", 200, 50, 0, 1, None), "convex", False)], 101)  # opt's 26 was invalid
+        self.assertEqual(best[(("random", 200, 50, 0, 2, None), "convex", False)], 26)
 
 
 class RenderingTest(SyntheticSweep):
@@ -201,6 +201,28 @@ class LowerBoundTest(unittest.TestCase):
         self.assertEqual(bounds.lower_bound(run(9, 0)), 6)
         self.assertEqual(bounds.lower_bound(run(9, 4)), 2)
         self.assertEqual(bounds.lower_bound(run(9, 40)), 1)
+
+
+class RealPolygonsTest(unittest.TestCase):
+    """Convex pieces against the optimum of their rules on corpus polygons, and the corpora's counts."""
+
+    @staticmethod
+    def key_run(algorithm, file, pieces, h=0, status="ok"):
+        return results.Run({"name": "{}/real/{}/n:10/r:4/h:{}".format(algorithm, file, h), "status": status,
+                            "pieces": pieces})
+
+    def test_each_convex_decomposition_against_the_optimum_of_its_rules(self):
+        registry = {a["name"]: a for a in synthetic.REGISTRY}
+        runs = [self.key_run("opt", "a.wkt", 3), self.key_run("approx", "a.wkt", 6), self.key_run("greedy", "a.wkt", 5),
+                self.key_run("opt", "b.wkt", 4), self.key_run("approx", "b.wkt", 4),
+                self.key_run("approx", "c.wkt", 9),  # no optimum finished: not counted
+                self.key_run("opt", "d.wkt", 2, status="invalid"), self.key_run("approx", "d.wkt", 9),
+                results.Run({"name": "approx/random/n:10/r:4/seed:1", "status": "ok", "pieces": 99})]
+        self.assertEqual(bounds.optimum_ratio_rows(runs, registry),
+                         [["approx", 2, "1.500", "1.500", "2.000 (approx/real/a.wkt/n:10/r:4/h:0)"]])
+        refused = [{"file": "real/e.wkt", "reason": "not simple"}, {"file": "other/f.wkt", "reason": "garbage"}]
+        runs.append(self.key_run("approx", "g.wkt", 3, h=1))
+        self.assertEqual(bounds.corpus_rows(runs, refused), [["other", 0, "-", 0, 1], ["real", 5, "10..10", 1, 1]])
 
 
 class CurvesAgainstHTest(unittest.TestCase):

@@ -75,9 +75,31 @@ class JournalTest(unittest.TestCase):
 class KeyTest(unittest.TestCase):
     def test_keys_of_families_with_holes_carry_h(self):
         self.assertEqual(results.parse_key("monotone/convex-holes/n:100/r:50/h:4/seed:2"),
-                         {"algorithm": "monotone", "family": "convex-holes", "n": 100, "r": 50, "h": 4, "seed": 2})
+                         {"algorithm": "monotone", "family": "convex-holes", "file": None, "n": 100, "r": 50, "h": 4,
+                          "seed": 2})
         self.assertEqual(results.parse_key("monotone/comb/n:100/r:49/seed:2")["h"], 0)
         self.assertIsNone(results.parse_key("monotone/comb/n:100/h:4/seed:2"))
+
+    def test_keys_of_corpora_name_the_file(self):
+        self.assertEqual(results.parse_key("keil/dcw/FR-00003.wkt/n:120/r:40/h:0"),
+                         {"algorithm": "keil", "family": "dcw", "file": "FR-00003.wkt", "n": 120, "r": 40, "h": 0,
+                          "seed": 0})
+        self.assertIsNone(results.parse_key("keil/dcw/FR-00003.wkt/n:120/r:40"))
+
+    def test_refused_files_are_listed_once_in_the_results(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            journal = os.path.join(tmp, "s.journal.jsonl")
+            run = {"name": "keil/mine/a.txt/n:4/r:0/h:0", "status": "ok", "key_index": 0}
+            lines = [{"context": {}}, {"refused": "mine/b.txt", "reason": "not simple"}, run,
+                     {"context": {}}, {"refused": "mine/b.txt", "reason": "not simple"}]
+            with open(journal, "w", encoding="utf-8") as f:
+                f.write("".join(json.dumps(line) + "\n" for line in lines))
+            self.assertEqual(results.assemble([journal], os.path.join(tmp, "s")), 1)
+            self.assertEqual(results.load_refused(os.path.join(tmp, "s.json")),
+                             [{"file": "mine/b.txt", "reason": "not simple"}])
+            with open(os.path.join(tmp, "s.csv"), encoding="utf-8") as f:
+                row = next(csv.DictReader(f))
+            self.assertEqual((row["family"], row["file"], row["seed"]), ("mine", "a.txt", "0"))
 
 
 class RejournalTest(unittest.TestCase):
