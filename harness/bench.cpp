@@ -150,7 +150,7 @@ CorpusProgress corpus_progress(const std::string& sweep) {
   };
 }
 
-// The files the corpora refuse, once per invocation: {"refused": "corpus/FILE", "reason": "..."}.
+// The files the corpora refuse, once per invocation that runs keys: {"refused": "corpus/FILE", "reason": "..."}.
 void journal_refusals(Journal& journal, const Sweep& sweep) {
   for (const auto& [file, reason] : refused_files(sweep))
     journal.append("{\"refused\": " + json_quote(file) + ", \"reason\": " + json_quote(reason) + "}");
@@ -167,7 +167,6 @@ int run(int argc, char** argv) {
   const std::string journal_path = stem(o) + ".journal.jsonl";
   const auto finished = Journal::finished(journal_path);
   Journal journal(journal_path);
-  journal_refusals(journal, sweep);
 
   const std::vector<SweepPolygon> polygons = sweep_polygons(sweep);
   const std::vector<SweepKey> keys = sweep_keys(sweep, polygons);
@@ -184,6 +183,7 @@ int run(int argc, char** argv) {
   std::fprintf(stderr, "%s: %zu keys, %zu already in %s, %zu to run\n", title.c_str(), mine.size(),
                mine.size() - to_run.size(), journal_path.c_str(), to_run.size());
   if (to_run.empty()) return 0;
+  journal_refusals(journal, sweep);
 
   Progress progress(title, to_run.size());
   SweepRunner runner(sweep, journal, progress, run_context(o, sweep));

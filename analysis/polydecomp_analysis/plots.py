@@ -3,6 +3,8 @@ its command line).
 
   time-vs-n_FAMILY_CURVE    time against n on log-log axes, one line per algorithm (median over seeds),
                             the fitted slope dashed, the claimed bound dotted through the largest point
+  time-vs-n_real_KIND       each algorithm of a kind on the real polygons (the corpora's, hollow markers)
+                            beside its `random` curve (line, median over seeds)
   time-vs-r_FAMILY_n-N      time against r at fixed n (r = 0 on the linear part of a symlog axis)
   pieces-vs-r_FAMILY_n-N    pieces of the convex decompositions against r, with r+1 and ceil(r/2)+1
   approximation-ratio       pieces / best valid count on the same polygon, per non-optimal algorithm
@@ -85,6 +87,39 @@ def time_vs_n(runs, registry, out_dir, style):
             name = "time-vs-n_{}_{}".format(slug(family), slug(label[len("vs-n "):]))
             save(fig, out_dir, name)
             made.append(name)
+    return made
+
+
+SYNTHETIC_BESIDE_REAL = ("random", "vs-n r=default")  # the synthetic curve the real polygons are drawn beside
+
+
+def real_beside_synthetic(runs, registry, out_dir, style):
+    """Per kind of algorithm, the real polygons' times beside the synthetic curve's."""
+    real = [r for r in runs if r.file is not None and r.timed and r.algorithm in registry]
+    family, curve = SYNTHETIC_BESIDE_REAL
+    made = []
+    for kind in sorted({registry[r.algorithm]["kind"] for r in real}):
+        fig, ax = plt.subplots(figsize=(8, 5))
+        for algorithm in sorted({r.algorithm for r in real if registry[r.algorithm]["kind"] == kind}):
+            colour, marker = style[algorithm]
+            synthetic = [r for r in runs if r.algorithm == algorithm and r.family == family and curve in r.curves
+                         and r.timed]
+            points = medians(synthetic, lambda r: r.n)
+            ax.plot([p[0] for p in points], [p[1] for p in points], marker=marker, color=colour, label=algorithm,
+                    linewidth=1.0, markersize=3)
+            mine = [r for r in real if r.algorithm == algorithm]
+            ax.scatter([r.n for r in mine], [r.seconds for r in mine], marker=marker, s=16, facecolors="none",
+                       edgecolors=[colour], linewidths=0.8)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("n (vertices)")
+        ax.set_ylabel("CPU time per run (s)")
+        ax.set_title("{}: real polygons (hollow) beside {}, {} (lines)".format(kind, family, curve[len("vs-n "):]))
+        ax.grid(True, which="major", alpha=0.3)
+        _legend(ax)
+        name = "time-vs-n_real_{}".format(slug(kind))
+        save(fig, out_dir, name)
+        made.append(name)
     return made
 
 
@@ -261,6 +296,7 @@ def make_plots(results_path, registry, out_dir, polydecomp=None, gallery_spec=No
     _, runs = results.load(results_path)
     style = styles({r.algorithm for r in runs} | set(registry))
     made = time_vs_n(runs, registry, out_dir, style)
+    made += real_beside_synthetic(runs, registry, out_dir, style)
     made += time_vs_r(runs, out_dir, style)
     made += pieces_vs_r(runs, registry, out_dir, style)
     made += approximation_ratio(runs, registry, out_dir)

@@ -2,7 +2,7 @@ import os
 import tempfile
 import unittest
 
-from polydecomp_analysis import bounds, plots
+from polydecomp_analysis import bounds, plots, results
 
 from . import synthetic
 
@@ -21,6 +21,20 @@ class PlotsTest(unittest.TestCase):
             for name in made:
                 for ext in ("png", "pdf"):
                     self.assertGreater(os.path.getsize(os.path.join(out, name + "." + ext)), 1000)
+
+    def test_real_polygons_beside_the_synthetic_curve_one_figure_per_kind(self):
+        registry = {a["name"]: a for a in synthetic.REGISTRY}
+        runs = [results.Run({"name": "{}/random/n:{}/r:{}/seed:1".format(a, n, n // 4), "status": "ok",
+                             "cpu_time": n, "time_unit": "ns", "curves": ["vs-n r=default"]})
+                for a in ("tri", "approx") for n in (100, 200, 400)]
+        runs += [results.Run({"name": "{}/real/{}.wkt/n:{}/r:3/h:0".format(a, n, n), "status": "ok", "cpu_time": n,
+                              "time_unit": "ns", "curves": ["vs-n corpus"]})
+                 for a in ("tri", "approx") for n in (50, 300)]
+        with tempfile.TemporaryDirectory() as out:
+            made = plots.real_beside_synthetic(runs, registry, out, plots.styles(registry))
+            self.assertEqual(made, ["time-vs-n_real_convex", "time-vs-n_real_triangulation"])
+            self.assertGreater(os.path.getsize(os.path.join(out, made[0] + ".png")), 1000)
+        self.assertEqual(plots.real_beside_synthetic(runs[:6], registry, out, plots.styles(registry)), [])
 
     def test_draws_a_decomposition_with_rational_steiner_points(self):
         import matplotlib.pyplot as plt
