@@ -24,17 +24,23 @@ namespace {
 
 constexpr std::size_t kDefaultHoles = 4;
 
-// The vertices the holes take at (n, r): k = n - (4t + b) with 2t + b = n - r - 2.
-std::size_t hole_vertices(std::size_t n, std::size_t r) { return 2 * r + 4 + (n - r) % 2 - n; }
+// Twice r, plus 4 and the cut b, against n: the holes' vertices k = n - (4t + b) with 2t + b = n - r - 2
+// are this minus n. Pre: r <= n - 4, so nothing overflows.
+std::size_t hole_vertices_plus_n(std::size_t n, std::size_t r) { return 2 * r + 4 + (n - r) % 2; }
 
+// Pre (HoleFamily::infeasible): n in range, so n - 4 does not wrap; every test is written so that a
+// huge r or h cannot wrap either.
 std::optional<std::string> rh_infeasible(std::size_t n, std::size_t r, std::size_t h) {
   if (h == 0) return "comb-holes has at least one hole (the comb without holes is `comb`)";
-  if (r + 4 > n) return "the outline has at least 4 convex vertices: r <= n - 4";
-  if (2 * r + 4 + (n - r) % 2 < n + 3 * h) return "each hole has at least 3 vertices: 2r - n + 4 + (n - r) mod 2 >= 3h";
+  if (r > n - 4) return "the outline has at least 4 convex vertices: r <= n - 4";
+  const std::size_t k_plus_n = hole_vertices_plus_n(n, r);
+  if (k_plus_n < n || h > (k_plus_n - n) / 3)
+    return "each hole has at least 3 vertices: 2r - n + 4 + (n - r) mod 2 >= 3h";
   return std::nullopt;
 }
 
 std::size_t default_reflex(std::size_t n, std::size_t h) {
+  if (h > n) return 0;  // infeasible anyway
   const std::size_t k = std::max(n / 2, 3 * h);
   return n + k < 4 ? 0 : (n + k - 4 + 1) / 2;
 }
@@ -60,7 +66,7 @@ Rings make_comb_holes(std::size_t n, std::size_t r, std::size_t h, std::uint64_t
   Rng rng(seed);
   const std::size_t twice_t_and_cut = n - r - 2;
   const auto t = static_cast<std::int64_t>(twice_t_and_cut / 2);
-  const gen::HoleGrid grid(hole_vertices(n, r), h, rng);
+  const gen::HoleGrid grid(hole_vertices_plus_n(n, r) - n, h, rng);
   const std::int64_t base = grid.side() + 2;
   const std::int64_t w = std::max<std::int64_t>(1, (base + 2 * t - 2) / (2 * t - 1));  // (2t - 1) w >= base
   Rings rings = {gen::points_of(comb_outline(t, w, base, base, twice_t_and_cut % 2 == 1))};

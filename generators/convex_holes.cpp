@@ -24,12 +24,15 @@ constexpr std::size_t kDefaultHoles = 4;
 
 std::optional<std::string> rh_infeasible(std::size_t n, std::size_t r, std::size_t h) {
   if (h == 0) return r == 0 ? std::nullopt : std::optional<std::string>("without holes the polygon is convex: r = 0");
-  if (r < 3 * h) return "each hole has at least 3 vertices: r >= 3h";
-  if (2 * r > n) return "the outline has at least as many vertices as the holes: r <= n/2";
+  if (h > r / 3) return "each hole has at least 3 vertices: r >= 3h";  // written so that a huge h cannot wrap
+  if (r > n / 2) return "the outline has at least as many vertices as the holes: r <= n/2";
   return std::nullopt;
 }
 
-std::size_t default_reflex(std::size_t n, std::size_t h) { return h == 0 ? 0 : std::max(3 * h, n / 2); }
+std::size_t default_reflex(std::size_t n, std::size_t h) {
+  if (h == 0 || h > n) return 0;  // h > n is infeasible anyway, and 3h must not wrap
+  return std::max(3 * h, n / 2);
+}
 
 // Whether the square [-a, a]^2 lies strictly inside the convex counter-clockwise polygon.
 bool holds_square(const std::vector<gen::Vec>& v, std::int64_t a) {

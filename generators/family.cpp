@@ -49,14 +49,48 @@ bool register_family(Family f) {
   return NamedRegistry<Family>::add(std::move(f));
 }
 
-std::vector<Point> generate(const std::string& family, std::size_t n, std::optional<std::size_t> r,
-                            std::uint64_t seed) {
+std::size_t reflex_vertices(const std::vector<Point>& ring) {
+  std::size_t reflex = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    reflex += orient(ring[i == 0 ? ring.size() - 1 : i - 1], ring[i], ring[(i + 1) % ring.size()]) < 0;
+  return reflex;
+}
+
+namespace {
+
+const Family& family_named(const std::string& family) {
   const Family* f = find_family(family);
   if (f == nullptr) {
     if (find_hole_family(family))
       throw std::invalid_argument("family " + family + " makes polygons with holes");
     throw std::invalid_argument("unknown family " + family + "; families: " + all_family_names());
   }
+  return *f;
+}
+
+// A family whose r is an outcome: n in range, and r, when asked for, the one the method gives.
+std::vector<Point> generate_outcome(const Family& f, std::size_t n, std::optional<std::size_t> r, std::uint64_t seed) {
+  if (n < f.min_n || n > f.max_n)
+    throw GeneratorError("family " + f.name + " cannot make n=" + std::to_string(n) + ": feasible " + f.range());
+  std::vector<Point> polygon = f.make(n, 0, seed);
+  check_output(f.name, n, {polygon});
+  if (r && *r != reflex_vertices(polygon))
+    throw GeneratorError("family " + f.name + " does not choose r: at n=" + std::to_string(n) + " and seed " +
+                         std::to_string(seed) + " its method gives r=" + std::to_string(reflex_vertices(polygon)) +
+                         ", not " + std::to_string(*r) + " (feasible " + f.range() + ")");
+  return polygon;
+}
+
+}  // namespace
+
+std::size_t reflex_outcome(const std::string& family, std::size_t n, std::uint64_t seed) {
+  return reflex_vertices(generate(family, n, std::nullopt, seed));
+}
+
+std::vector<Point> generate(const std::string& family, std::size_t n, std::optional<std::size_t> r,
+                            std::uint64_t seed) {
+  const Family* f = &family_named(family);
+  if (f->r_is_outcome) return generate_outcome(*f, n, r, seed);
   const std::size_t reflex = r ? *r : f->default_reflex(n);
   if (f->infeasible(n, reflex)) {
     throw GeneratorError("family " + f->name + " cannot make n=" + std::to_string(n) +

@@ -4,6 +4,11 @@
 // (|x|, |y| < 2^31) and, where the family controls it, exactly r reflex vertices. Output depends only
 // on (n, r, seed): the project's own PRNG and integer arithmetic, never std::*_distribution, so the same
 // arguments give the same bytes on every machine. Each family file registers itself.
+//
+// The random polygons of Auer and Held's generators (star, space-partition, 2-opt) do not choose r: r
+// is what the method gives (r_is_outcome). Their r_infeasible refuses every r that is asked for, so that
+// a grid of (n, r) leaves them out; generate() makes them with r left out (or asked for as exactly
+// the r the method gives at that n and seed), and reflex_outcome() says that r.
 #pragma once
 
 #include "core/geometry.h"
@@ -33,6 +38,7 @@ struct Family {
   std::size_t max_n;
   std::string r_range;  // the feasible r at a feasible n, in words, e.g. "0 <= r <= 2(n-3)/3"
   bool controls_r;      // whether r can be chosen independently of n
+  bool r_is_outcome = false;  // r is what the method gives at (n, seed), never chosen
   // Why r cannot be realised at an n in range, or nothing when it can.
   std::function<std::optional<std::string>(std::size_t n, std::size_t r)> r_infeasible;
   // The r used when none is asked for (e.g. n/4 for random, 0 for convex).
@@ -50,9 +56,16 @@ const Family* find_family(const std::string& name);
 bool register_family(Family f);
 
 // Makes a polygon of `family`; r defaults to the family's default. Throws GeneratorError naming the
-// feasible range when (n, r) cannot be realised, std::invalid_argument for an unknown family.
+// feasible range when (n, r) cannot be realised, std::invalid_argument for an unknown family. For a
+// family whose r is an outcome, an r asked for must be the one the method gives, else GeneratorError.
 std::vector<Point> generate(const std::string& family, std::size_t n, std::optional<std::size_t> r,
                             std::uint64_t seed);
+
+// The r that family `family`, whose r is an outcome, gives at (n, seed) (by making the polygon).
+std::size_t reflex_outcome(const std::string& family, std::size_t n, std::uint64_t seed);
+
+// The reflex vertices of a simple counter-clockwise ring (exact predicates).
+std::size_t reflex_vertices(const std::vector<Point>& ring);
 
 // A family of polygons with holes: n vertices in all (the outer ring's and the holes'), r reflex
 // vertices and h holes, exactly, where the family can realise them; the outer ring counter-clockwise,

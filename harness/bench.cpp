@@ -1,5 +1,6 @@
-// polydecomp-bench: runs a named sweep (harness/sweeps.json) as Google Benchmark benchmarks, one per
-// key "algorithm/family/n:N/r:R/seed:S", and journals every finished key to
+// polydecomp-bench: runs a named sweep (harness/sweeps.json, or --sweep-file) as Google Benchmark
+// benchmarks, one per key "algorithm/family/n:N/r:R[/h:H]/seed:S" or, for a corpus's file,
+// "algorithm/CORPUS/FILE/n:N/r:R/h:H", and journals every finished key to
 // DIR/SWEEP[.shard-I-of-K].journal.jsonl. Keys already in the journal are not run again, so an
 // interrupted sweep resumes where it stopped. analysis/sweep.py drives it and assembles the JSON and
 // CSV results.
@@ -150,10 +151,15 @@ CorpusProgress corpus_progress(const std::string& sweep) {
   };
 }
 
-// The files the corpora refuse, once per invocation that runs keys: {"refused": "corpus/FILE", "reason": "..."}.
+// The files the corpora refuse, as this invocation read them, in one line (the latest line is the one
+// that counts): {"refusals": [{"file": "corpus/FILE", "reason": "..."}, ...]}.
 void journal_refusals(Journal& journal, const Sweep& sweep) {
+  if (sweep.corpora.empty()) return;
+  std::string items;
   for (const auto& [file, reason] : refused_files(sweep))
-    journal.append("{\"refused\": " + json_quote(file) + ", \"reason\": " + json_quote(reason) + "}");
+    items += (items.empty() ? "" : ", ") + std::string("{\"file\": ") + json_quote(file) + ", \"reason\": " +
+             json_quote(reason) + "}";
+  journal.append("{\"refusals\": [" + items + "]}");
 }
 
 int run(int argc, char** argv) {
@@ -167,6 +173,7 @@ int run(int argc, char** argv) {
   const std::string journal_path = stem(o) + ".journal.jsonl";
   const auto finished = Journal::finished(journal_path);
   Journal journal(journal_path);
+  journal_refusals(journal, sweep);
 
   const std::vector<SweepPolygon> polygons = sweep_polygons(sweep);
   const std::vector<SweepKey> keys = sweep_keys(sweep, polygons);
@@ -183,7 +190,6 @@ int run(int argc, char** argv) {
   std::fprintf(stderr, "%s: %zu keys, %zu already in %s, %zu to run\n", title.c_str(), mine.size(),
                mine.size() - to_run.size(), journal_path.c_str(), to_run.size());
   if (to_run.empty()) return 0;
-  journal_refusals(journal, sweep);
 
   Progress progress(title, to_run.size());
   SweepRunner runner(sweep, journal, progress, run_context(o, sweep));

@@ -1,6 +1,5 @@
 #include "harness/bench_runner.h"
 
-#include "core/io.h"
 #include "core/json.h"
 #include "core/validate.h"
 #include "generators/family.h"
@@ -72,7 +71,7 @@ std::string budget_family(const SweepPolygon& p) {
 
 // The polygon of a sweep: generated, or read from its corpus file (which the corpus accepted).
 Polygon polygon_of(const SweepPolygon& p) {
-  if (p.file) return Polygon::make_with_holes(read_parts_file(p.file->path).at(0));
+  if (p.file) return read_corpus_polygon(p.file->path);
   return Polygon::make_with_holes(generate_with_holes(p.family, p.n, p.r, p.h, p.seed));
 }
 

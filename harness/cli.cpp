@@ -1,4 +1,4 @@
-// The polydecomp command line: list | generate | run | cut | check (see docs/CONTRACT.md).
+// The polydecomp command line: list | generate | run | cut | check | corpus (see docs/CONTRACT.md).
 //
 // Exit status: 0 success, 2 bad usage, 3 bad polygon, 4 the run failed (the algorithm failed, ran out
 // of memory or stack, or `--max-seconds` / `--max-memory` stopped it), 5 `run`'s result is not valid
@@ -263,6 +263,9 @@ int cmd_generate(const std::vector<std::string>& args) {
   if (vm.count("reflex")) reflex = vm["reflex"].as<Count>().value;
   if (vm.count("holes")) holes = vm["holes"].as<Count>().value;
   const std::string family = vm["family"].as<std::string>();
+  if (reflex && find_family(family) && find_family(family)->r_is_outcome)
+    usage("family " + family + " does not choose r: it is an outcome of the method (leave out --reflex; " +
+          "polydecomp check counts it)");
   Rings rings;
   try {
     rings = generate_with_holes(family, vm["n"].as<Count>().value, reflex, holes, vm["seed"].as<Count>().value);
@@ -679,7 +682,7 @@ int cmd_check(const std::vector<std::string>& args) {
   return 0;
 }
 
-// A corpus's files, each with its n, r and h or why it is refused (docs/CONTRACT.md, "Corpora").
+// A corpus's files, each with its n, r and h or why it is refused (docs/CONTRACT.md, "polydecomp corpus").
 std::string corpus_listing(const Corpus& c, bool json) {
   std::string out;
   const std::size_t accepted = c.accepted().size(), refused = c.files.size() - accepted;
@@ -698,7 +701,7 @@ std::string corpus_listing(const Corpus& c, bool json) {
   if (json)
     return "{\"corpus\": " + json_quote(c.name) + ", \"accepted\": " + number(accepted) + ", \"refused\": " +
            number(refused) + ", \"files\": [\n  " + out + "]}\n";
-  return out + "corpus " + c.name + ": " + number(c.files.size()) + " files, " + number(accepted) + " accepted, " +
+  return out + "corpus " + quoted_input(c.name) + ": " + number(c.files.size()) + " files, " + number(accepted) + " accepted, " +
          number(refused) + " refused\n";
 }
 
@@ -710,6 +713,9 @@ int cmd_corpus(const std::vector<std::string>& args) {
       "rank", po::value<Count>()->default_value(Count{1}, "1"), "with --n: the K-th nearest")(
       "output,o", po::value<std::string>()->default_value(""), "with --n: file")("help,h", "this help");
   const auto vm = parse("corpus", args, opts);
+  if (vm.count("n") && vm.count("json")) usage("--json lists the folder; with --n the command writes one file");
+  if (!vm.count("n") && (!vm["rank"].defaulted() || !vm["output"].defaulted()))
+    usage("--rank and -o go with --n");
   Corpus c;
   try {
     c = read_corpus(vm["dir"].as<std::string>());
@@ -723,8 +729,8 @@ int cmd_corpus(const std::vector<std::string>& args) {
   const std::size_t n = vm["n"].as<Count>().value, rank = vm["rank"].as<Count>().value;
   const CorpusFile* f = c.nearest(n, rank);
   if (!f)
-    throw Exit{kBadPolygon, "corpus " + c.name + " accepts " + std::to_string(c.accepted().size()) +
-                                " files; there is no " + std::to_string(rank) + "-th nearest to n=" + std::to_string(n)};
+    throw Exit{kBadPolygon, "corpus " + quoted_input(c.name) + " accepts " + std::to_string(c.accepted().size()) +
+                                " files; none is at rank " + std::to_string(rank) + " from n=" + std::to_string(n)};
   std::ifstream in(f->path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();

@@ -23,12 +23,7 @@ std::string lower(std::string s) {
 CorpusFile read_one(const fs::path& path) {
   CorpusFile f{path.filename().string(), path.string(), 0, 0, 0, std::nullopt};
   try {
-    const std::vector<Rings> parts = read_parts_file(f.path);
-    if (parts.size() != 1) {
-      f.refused = "a multipolygon of " + std::to_string(parts.size()) + " parts; a corpus file holds one polygon";
-      return f;
-    }
-    const Polygon p = Polygon::make_with_holes(parts[0]);
+    const Polygon p = read_corpus_polygon(f.path);
     f.n = p.size(), f.r = p.reflex_count(), f.h = p.hole_count();
   } catch (const std::bad_alloc&) {
     throw;
@@ -39,6 +34,15 @@ CorpusFile read_one(const fs::path& path) {
 }
 
 }  // namespace
+
+Polygon read_corpus_polygon(const std::string& path) {
+  const std::vector<Rings> parts = read_parts_file(path);
+  if (parts.size() != 1)
+    throw std::invalid_argument(parts.empty() ? std::string("no polygon in the file")
+                                              : "a multipolygon of " + std::to_string(parts.size()) +
+                                                    " parts; a corpus file holds one polygon");
+  return Polygon::make_with_holes(parts[0]);
+}
 
 bool is_corpus_file_name(const std::string& name) {
   const std::string ext = lower(fs::path(name).extension().string());
@@ -73,8 +77,9 @@ Corpus read_corpus(const std::string& path, const CorpusProgress& progress) {
   std::sort(paths.begin(), paths.end(), [](const fs::path& a, const fs::path& b) {
     return a.filename().string() < b.filename().string();
   });
-  Corpus c{fs::path(path).lexically_normal().filename().string(), path, {}};
-  if (c.name.empty()) c.name = fs::path(path).lexically_normal().parent_path().filename().string();
+  fs::path folder = fs::weakly_canonical(path);
+  if (!folder.has_filename()) folder = folder.parent_path();  // "x/" is "x"
+  Corpus c{folder.filename().string(), path, {}};
   for (const fs::path& p : paths) {
     c.files.push_back(read_one(p));
     if (progress) progress(c.files.size(), paths.size());

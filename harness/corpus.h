@@ -1,5 +1,5 @@
 // A corpus: a folder of polygon files, one polygon a file, as a sweep family ("dir:PATH" in a sweeps
-// file) and as `polydecomp corpus`'s input (docs/CONTRACT.md, "Corpora").
+// file) and as `polydecomp corpus`'s input (docs/CONTRACT.md, "polydecomp corpus" and "Corpora in sweeps").
 //
 // Every regular file whose name ends in .txt, .wkt, .json or .geojson (any case) is read through the
 // one checked door (read_parts_file, then Polygon::make_with_holes); its n, r and h are its own. A file
@@ -8,6 +8,8 @@
 // its name in the folder. Files are listed in name order (bytewise), so a corpus reads the same on
 // every machine.
 #pragma once
+
+#include "core/polygon.h"
 
 #include <cstddef>
 #include <functional>
@@ -34,6 +36,10 @@ struct Corpus {
   // equally near ones the smaller n, then the name; nothing when fewer files are accepted.
   const CorpusFile* nearest(std::size_t n, std::size_t rank) const;
 };
+
+// The polygon of a corpus file through the checked door; throws PolygonError (or std::invalid_argument
+// for a multipolygon of several parts) naming what is wrong.
+Polygon read_corpus_polygon(const std::string& path);
 
 // Whether a file name is a polygon file of a corpus (by its extension).
 bool is_corpus_file_name(const std::string& name);

@@ -106,7 +106,9 @@ std::vector<std::string> select_corpora(const Json& v, const std::string& where,
     if (!names_corpus(item)) throw SweepError(where + ": a curve holds corpora (\"dir:PATH\") or families, not both");
     const std::filesystem::path folder(item->text.substr(std::char_traits<char>::length(kCorpusPrefix)));
     if (folder.empty()) throw SweepError(where + ": \"dir:\" needs a folder");
-    paths.push_back((folder.is_relative() ? base / folder : folder).lexically_normal().string());
+    std::filesystem::path resolved = (folder.is_relative() ? base / folder : folder).lexically_normal();
+    if (!resolved.has_filename()) resolved = resolved.parent_path();  // "dir:x/" is "dir:x"
+    paths.push_back(resolved.string());
   }
   return paths;
 }
@@ -254,6 +256,8 @@ void read_corpora(Sweep& s, const std::string& where, const CorpusProgress& prog
         throw SweepError(where + ": " + e.what());
       }
       const std::string& name = s.corpora[path].name;
+      if (find_family(name) || find_hole_family(name))
+        throw SweepError(where + ": corpus " + path + " is named like the family " + name + "; rename its folder");
       if (path_of_name.count(name))
         throw SweepError(where + ": corpora " + path_of_name[name] + " and " + path + " have one name, " + name);
       path_of_name[name] = path;
@@ -310,14 +314,20 @@ std::vector<std::pair<std::string, std::string>> refused_files(const Sweep& swee
   return out;
 }
 
-// The r of a grid point, or nothing when the family cannot realise the point.
-std::optional<std::size_t> feasible_reflex(const std::string& family_name, const Sweep::GridPoint& at) {
+// The r of a grid point at a seed, or nothing when the family cannot realise the point. A family whose
+// r is an outcome realises only the rule "default", with the r its method gives at (n, seed).
+std::optional<std::size_t> feasible_reflex(const std::string& family_name, const Sweep::GridPoint& at,
+                                           std::uint64_t seed) {
   if (const HoleFamily* f = find_hole_family(family_name)) {
     const std::size_t r = resolve_reflex(at.rule, f->default_reflex(at.n, *at.h), at.n);
     if (f->infeasible(at.n, r, *at.h)) return std::nullopt;
     return r;
   }
   const Family& f = *find_family(family_name);
+  if (f.r_is_outcome) {
+    if (at.rule != "default" || at.n < f.min_n || at.n > f.max_n) return std::nullopt;
+    return reflex_outcome(f.name, at.n, seed);
+  }
   const std::size_t r = resolve_reflex(at.rule, f.default_reflex(at.n), at.n);
   if (f.infeasible(at.n, r)) return std::nullopt;
   return r;
@@ -360,11 +370,10 @@ std::vector<SweepPolygon> sweep_polygons(const Sweep& sweep) {
       continue;
     }
     for (const std::string& family_name : curve.families) {
-      for (const Sweep::GridPoint& at : curve.points) {
-        const std::optional<std::size_t> r = feasible_reflex(family_name, at);
-        if (!r) continue;
-        for (std::uint64_t seed : sweep.seeds) add({family_name, at.n, *r, at.h, seed, ""}, curve.label);
-      }
+      for (const Sweep::GridPoint& at : curve.points)
+        for (std::uint64_t seed : sweep.seeds)
+          if (const std::optional<std::size_t> r = feasible_reflex(family_name, at, seed))
+            add({family_name, at.n, *r, at.h, seed, ""}, curve.label);
     }
   }
   std::vector<SweepPolygon> polygons;

@@ -7,7 +7,8 @@
 // reflex rule, and per number of holes), time versus r (a list of reflex rules, one curve per n and
 // number of holes) or, for the families with holes, time versus h (a list of numbers of holes, one
 // curve per n and reflex rule). A reflex rule is a number, "default" (the family's own choice for that
-// n, and h) or a fraction of n written "n/8", "3*n/8". "families" is a list, "all" (every family
+// n, and h) or a fraction of n written "n/8", "3*n/8"; a family whose r is an outcome of its method
+// (Family::r_is_outcome) takes only "default", its r at each seed the method's. "families" is a list, "all" (every family
 // without holes), "controls_r" (those that control r) or "holes" (every family with holes, whose
 // curves need "h"). Points a family cannot realise (Family::infeasible) are left out of the grid, not
 // reported as errors.
@@ -16,9 +17,11 @@
 // (curve "vs-n corpus"); with "n": [...] it takes, for each n and seed s, the file s-th nearest to n
 // vertices (curve "vs-n nearest"), so that a corpus serves the n-curves. A relative PATH is read from
 // the sweeps file's folder. Its keys are "algorithm/CORPUS/FILE/n:N/r:R/h:H", n, r and h the file's own;
-// the files a folder refuses are listed once (Sweep::refused), never run.
+// the files a folder refuses are listed once (refused_files), never run. A corpus may not be named
+// like a generated family (their keys and budgets would mix).
 //
-// Keys run polygon by polygon: by family, then n, then r, then h, then seed, then algorithm. So every polygon
+// Keys run polygon by polygon: by family, then n, then r, then h, then seed (a corpus's: its file
+// name), then algorithm. So every polygon
 // is built once, and a grid point runs after every point it dominates (smaller n and smaller r), which
 // is what the budget's prediction needs.
 #pragma once
@@ -96,7 +99,8 @@ Sweep load_sweep(const std::string& path, const std::string& name, const CorpusP
 // The files the sweep's corpora refuse: "corpus/FILE" and the reason, in corpus then name order.
 std::vector<std::pair<std::string, std::string>> refused_files(const Sweep& sweep);
 
-// The sweep's polygons in run order, without duplicates and without infeasible points.
+// The sweep's polygons in run order, without duplicates and without infeasible points. A corpus's
+// polygons point into the sweep's corpora: they must not outlive `sweep`.
 std::vector<SweepPolygon> sweep_polygons(const Sweep& sweep);
 
 // Parses "i/k" with 1 <= i <= k; throws SweepError.

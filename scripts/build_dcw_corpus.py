@@ -63,10 +63,9 @@ def wkt(part):
     return "POLYGON (" + ", ".join(rings) + ")\n"
 
 
-def write_parts(netcdf, names, out):
+def write_parts(netcdf4, netcdf, names, out):
     """Writes every part's file; returns the manifest rows (without the check)."""
-    import netCDF4  # python3-netcdf4, installed by make deps
-    data = netCDF4.Dataset(netcdf)
+    data = netcdf4.Dataset(netcdf)
     data.set_auto_maskandscale(False)
     rows = []
     for code in sorted(names):
@@ -98,31 +97,51 @@ def summary(rows):
     return "\n".join(lines) + "\n"
 
 
+def fail(message):
+    print("error: " + message, file=sys.stderr)
+    return 1
+
+
+def write_atomic(path, text):
+    with open(path + ".tmp", "w", encoding="utf-8") as f:
+        f.write(text)
+    os.replace(path + ".tmp", path)
+
+
 def main(argv=None):
+    """Builds the corpus beside OUT and puts it in place only when it is complete, so that a failure
+    leaves the corpus that was there (and its manifest) as it was."""
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--netcdf", default=os.path.join(DCW_FOLDER, "dcw-gmt.nc"))
     parser.add_argument("--out", default="corpora/dcw")
     parser.add_argument("--build", default="build")
     args = parser.parse_args(argv)
+    out = os.path.normpath(args.out)
     if not os.path.exists(args.netcdf):
-        print("error: {} is missing; install Debian's gmt-dcw (make deps)".format(args.netcdf), file=sys.stderr)
-        return 1
-    if os.path.isdir(args.out):
-        shutil.rmtree(args.out)
-    os.makedirs(args.out)
-    rows = write_parts(args.netcdf, countries(os.path.dirname(args.netcdf)), args.out)
-    listing = subprocess.run([os.path.join(args.build, "polydecomp"), "corpus", "--dir", args.out, "--json"],
-                             check=True, stdout=subprocess.PIPE).stdout
-    checked = {f["file"]: f for f in json.loads(listing)["files"]}
+        return fail("{} is missing; install Debian's gmt-dcw (make deps)".format(args.netcdf))
+    try:
+        import netCDF4
+    except ImportError:
+        return fail("python3-netcdf4 is missing; it reads {} (make deps installs it)".format(args.netcdf))
+    if os.path.isdir(out) and any(not name.endswith(".wkt") for name in os.listdir(out)):
+        return fail("{} holds files that are not the corpus's; it would be replaced".format(out))
+    building = out + ".building"
+    shutil.rmtree(building, ignore_errors=True)
+    os.makedirs(building)
+    rows = write_parts(netCDF4, args.netcdf, countries(os.path.dirname(args.netcdf)), building)
+    listing = subprocess.run([os.path.join(args.build, "polydecomp"), "corpus", "--dir", building, "--json"],
+                             stdout=subprocess.PIPE)
+    if listing.returncode != 0:
+        return fail("polydecomp corpus could not read {} (exit status {})".format(building, listing.returncode))
+    checked = {f["file"]: f for f in json.loads(listing.stdout)["files"]}
     for row in rows:
         f = checked[row["file"]]
         row.update({"refused": f["refused"]} if "refused" in f else {"n": f["n"], "r": f["reflex"], "h": f["holes"]})
-    with open(args.out.rstrip("/") + ".manifest.json", "w", encoding="utf-8") as f:
-        json.dump({"source": args.netcdf, "parts": rows}, f, indent=0)
-        f.write("\n")
+    shutil.rmtree(out, ignore_errors=True)
+    os.rename(building, out)
+    write_atomic(out + ".manifest.json", json.dumps({"source": args.netcdf, "parts": rows}, indent=0) + "\n")
     text = summary(rows)
-    with open(args.out.rstrip("/") + ".manifest.md", "w", encoding="utf-8") as f:
-        f.write(text)
+    write_atomic(out + ".manifest.md", text)
     print(text, file=sys.stderr, end="")
     return 0
 

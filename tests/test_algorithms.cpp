@@ -90,8 +90,8 @@ std::vector<Case> small_cases() {
   for (const Family& f : families())
     for (std::size_t n : {12, 24, 60})
       for (std::uint64_t seed : {1, 2, 3}) {
-        const std::size_t r = f.default_reflex(n);
-        if (!f.infeasible(n, r)) cases.push_back({f.name, n, r, seed});
+        const std::size_t r = f.r_is_outcome ? reflex_outcome(f.name, n, seed) : f.default_reflex(n);
+        if (f.r_is_outcome || !f.infeasible(n, r)) cases.push_back({f.name, n, r, seed});
         if (f.controls_r && n == 24 && !f.infeasible(n, 1)) cases.push_back({f.name, n, std::size_t{1}, seed});
       }
   return cases;

@@ -1,4 +1,4 @@
-// Corpora (harness/corpus.h, docs/CONTRACT.md "Corpora"): a folder of polygon files read through the
+// Corpora (harness/corpus.h, docs/CONTRACT.md, "polydecomp corpus" and "Corpora in sweeps"): a folder of polygon files read through the
 // checked door, each file accepted with its own n, r and h or refused with the reason; `polydecomp
 // corpus` lists it and picks the file nearest to n vertices; a sweep names it as "dir:PATH" (relative
 // to the sweeps file), its keys "algorithm/CORPUS/FILE/n:N/r:R/h:H", and refuses malformed curves of
@@ -66,7 +66,7 @@ TEST(Corpus, CommandListsTheFolderAndWritesTheNearestFile) {
   EXPECT_EQ(list.status, 0) << list.err;
   EXPECT_NE(list.out.find("'framed.geojson': n=8 reflex=4 holes=1\n"), std::string::npos) << list.out;
   EXPECT_NE(list.out.find("'bowtie.txt': refused: not simple: edge 0-1 crosses edge 2-3\n"), std::string::npos);
-  EXPECT_NE(list.out.find("corpus shapes: 7 files, 3 accepted, 4 refused\n"), std::string::npos);
+  EXPECT_NE(list.out.find("corpus 'shapes': 7 files, 3 accepted, 4 refused\n"), std::string::npos);
   const command::Result json = command::run(std::string(PD_CLI) + " corpus --json --dir " + dir.string(), scratch);
   EXPECT_EQ(json.out.rfind("{\"corpus\": \"shapes\", \"accepted\": 3, \"refused\": 4, \"files\": [", 0), 0u) << json.out;
   const command::Result nearest = command::run(std::string(PD_CLI) + " corpus --dir " + dir.string() + " --n 7 --rank 2", scratch);
@@ -74,7 +74,10 @@ TEST(Corpus, CommandListsTheFolderAndWritesTheNearestFile) {
   EXPECT_EQ(nearest.out, command::slurp(dir / "framed.geojson"));  // 6 and 8 as near: 6 first
   const command::Result past = command::run(std::string(PD_CLI) + " corpus --dir " + dir.string() + " --n 7 --rank 4", scratch);
   EXPECT_EQ(past.status, 3);
-  EXPECT_EQ(past.err, "error: corpus shapes accepts 3 files; there is no 4-th nearest to n=7\n");
+  EXPECT_EQ(past.err, "error: corpus 'shapes' accepts 3 files; none is at rank 4 from n=7\n");
+  const command::Result misused = command::run(std::string(PD_CLI) + " corpus --dir " + dir.string() + " --rank 2", scratch);
+  EXPECT_EQ(misused.status, 2);
+  EXPECT_EQ(misused.err, "error: --rank and -o go with --n\n");
   const command::Result missing = command::run(std::string(PD_CLI) + " corpus --dir " + (dir / "nowhere").string(), scratch);
   EXPECT_EQ(missing.status, 3);
   EXPECT_EQ(missing.err, "error: corpus " + (dir / "nowhere").string() + " is not a folder\n");
@@ -104,7 +107,8 @@ TEST(Corpus, SweepsNameItRelativeToTheSweepsFile) {
   EXPECT_EQ(refused_files(all)[0], (std::pair<std::string, std::string>{"shapes/bowtie.txt", "not simple: edge 0-1 crosses edge 2-3"}));
   // Seeds 1 and 2: the nearest two to 4 (the square, the hexagon) and to 100 (framed, hexagon).
   ids.clear();
-  for (const SweepPolygon& p : sweep_polygons(load_sweep(file, "near"))) ids.push_back(p.id());
+  const Sweep near = load_sweep(file, "near");  // its polygons point into it
+  for (const SweepPolygon& p : sweep_polygons(near)) ids.push_back(p.id());
   EXPECT_EQ(ids, (std::vector<std::string>{"shapes/square.txt/n:4/r:0/h:0", "shapes/hexagon.wkt/n:6/r:0/h:0",
                                            "shapes/framed.geojson/n:8/r:4/h:1"}));
   const auto error_of = [&](const std::string& sweep) {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -148,6 +149,10 @@ const std::map<std::string, std::function<bool(std::size_t, std::size_t)>>& docu
        [](std::size_t n, std::size_t r) { return n <= kMaxX2PairsN && r >= 2 && r % 2 == 0 && n >= 3 * r + 4; }},
       {"x4-quads",
        [](std::size_t n, std::size_t r) { return n <= kMaxX4QuadsN && r >= 4 && r % 4 == 0 && n >= 3 * r + 4; }},
+      // r is an outcome of the method: a grid of (n, r) never holds these (OutcomeFamilies).
+      {"star", [](std::size_t, std::size_t) { return false; }},
+      {"space-partition", [](std::size_t, std::size_t) { return false; }},
+      {"2-opt", [](std::size_t, std::size_t) { return false; }},
   };
   return ranges;
 }
@@ -176,8 +181,9 @@ TEST(Generators, SimplicityCheckFindsProblems) {
 TEST(Generators, RegistryListsTheFamiliesSortedByName) {
   std::vector<std::string> names;
   for (const Family& f : families()) names.push_back(f.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"comb", "convex", "few-notches", "notch-heavy", "random",
-                                             "spiral", "x-pattern", "x2-pairs", "x4-quads"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"2-opt", "comb", "convex", "few-notches", "notch-heavy", "random",
+                                             "space-partition", "spiral", "star", "x-pattern", "x2-pairs",
+                                             "x4-quads"}));
   ASSERT_NE(find_family("spiral"), nullptr);
   EXPECT_EQ(find_family("spiral")->name, "spiral");
   EXPECT_EQ(find_family("no-such"), nullptr);
@@ -198,8 +204,8 @@ TEST(Generators, UnknownFamilyNamesTheFamilies) {
     FAIL() << "GeneratorError for an unknown family";
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
-              "unknown family hexagon; families: comb, convex, few-notches, notch-heavy, random, spiral, "
-              "x-pattern, x2-pairs, x4-quads, comb-holes, convex-holes");
+              "unknown family hexagon; families: 2-opt, comb, convex, few-notches, notch-heavy, random, "
+              "space-partition, spiral, star, x-pattern, x2-pairs, x4-quads, comb-holes, convex-holes");
   }
 }
 
@@ -229,6 +235,7 @@ TEST(Generators, InfeasibleMatchesTheDocumentedRange) {
 
 TEST(Generators, InfeasibleThrowsNamingTheRange) {
   for (const Family& f : families()) {
+    if (f.r_is_outcome) continue;  // it makes the r its method gives (OutcomeFamilies)
     for (std::size_t n = 0; n <= 40; ++n) {
       for (std::size_t r = 0; r <= n + 2; ++r) {
         if (!f.infeasible(n, r)) continue;
@@ -286,6 +293,7 @@ TEST(Generators, QuadsAreSimpleWithExactlyRNotches) {
 
 TEST(Generators, DefaultReflexIsFeasible) {
   for (const Family& f : families()) {
+    if (f.r_is_outcome) continue;  // OutcomeFamilies below
     std::size_t least = 0;
     while (f.infeasible(least, f.default_reflex(least))) ++least;
     for (std::size_t n = least; n <= 500; ++n) {
@@ -301,9 +309,7 @@ TEST(Generators, DefaultReflexIsFeasible) {
 
 TEST(Generators, SameArgumentsGiveTheSamePolygon) {
   for (const Family& f : families()) {
-    const std::size_t n = 300;
-    const std::size_t r = f.default_reflex(n);
-    EXPECT_EQ(generate(f.name, n, r, 42), generate(f.name, n, r, 42)) << f.name;
+    EXPECT_EQ(generate(f.name, 300, std::nullopt, 42), generate(f.name, 300, std::nullopt, 42)) << f.name;
   }
   EXPECT_NE(generate("random", 300, 40, 1), generate("random", 300, 40, 2));
 }
@@ -361,6 +367,54 @@ TEST(Generators, MillionVertices) {
   expect_large_valid("x4-quads", 1'000'000, 333'332);
 }
 
+
+// The random polygons whose r is an outcome (star, space-partition, 2-opt, after Auer and Held): exact
+// n, simple, counter-clockwise, no collinear vertices; r what reflex_outcome says, an r asked for
+// accepted only when it is that one; every r refused in a grid of (n, r); pinned checksums.
+TEST(OutcomeFamilies, AreValidAndSayTheirR) {
+  std::size_t made = 0;
+  for (const Family& f : families()) {
+    if (!f.r_is_outcome) continue;
+    EXPECT_FALSE(f.controls_r) << f.name;
+    EXPECT_TRUE(f.infeasible(100, 0)) << "a grid of (n, r) leaves " << f.name << " out";
+    for (std::size_t n = 3; n <= 60; ++n)
+      for (std::uint64_t seed : {1, 2, 3}) {
+        const std::size_t r = reflex_outcome(f.name, n, seed);
+        expect_valid(f.name, n, r, seed);
+        ++made;
+      }
+    for (std::size_t n : {257, 2000}) expect_valid(f.name, n, reflex_outcome(f.name, n, 9), 9);
+    const std::size_t r = reflex_outcome(f.name, 50, 4);
+    EXPECT_EQ(generate(f.name, 50, r, 4), generate(f.name, 50, std::nullopt, 4));
+    try {
+      generate(f.name, 50, r + 1, 4);
+      ADD_FAILURE() << f.name << " made an r it does not give";
+    } catch (const GeneratorError& e) {
+      EXPECT_EQ(std::string(e.what()), "family " + f.name + " does not choose r: at n=50 and seed 4 its method gives r=" +
+                                           std::to_string(r) + ", not " + std::to_string(r + 1) + " (feasible " +
+                                           f.range() + ")");
+    }
+    EXPECT_THROW(generate(f.name, 2, std::nullopt, 1), GeneratorError);
+    EXPECT_THROW(generate(f.name, f.max_n + 1, std::nullopt, 1), GeneratorError);
+    EXPECT_NE(generate(f.name, 40, std::nullopt, 1), generate(f.name, 40, std::nullopt, 2));
+  }
+  EXPECT_EQ(made, 3u * 58 * 3);
+}
+
+TEST(OutcomeFamilies, LargeSizesInSeconds) {
+  for (const std::string family : {"star", "space-partition"}) {
+    const Polygon p = Polygon::make(generate(family, 100000, std::nullopt, 5));
+    EXPECT_EQ(p.size(), 100000u);
+    EXPECT_FALSE(p.input_was_clockwise());
+  }
+  EXPECT_EQ(Polygon::make(generate("2-opt", 10000, std::nullopt, 5)).size(), 10000u);
+}
+
+TEST(OutcomeFamilies, ChecksumsArePinned) {
+  EXPECT_EQ(fnv1a(generate("star", 1000, std::nullopt, 1)), 0x65773d892b2fb501ULL);
+  EXPECT_EQ(fnv1a(generate("space-partition", 1000, std::nullopt, 1)), 0xe790d73cfacd128eULL);
+  EXPECT_EQ(fnv1a(generate("2-opt", 500, std::nullopt, 1)), 0x159883b530287fceULL);
+}
 
 // The families with holes: exactly n vertices in all, r reflex vertices and h holes, through the
 // checked door (every ring simple, the holes inside and apart), the same bytes for the same arguments,
@@ -426,6 +480,15 @@ TEST(HoleFamilies, CombHolesRangesAndDefaults) {
   EXPECT_EQ(f.default_reflex(10000, 1024), 7498u);
   EXPECT_EQ(generate_with_holes("comb-holes", 500, 300, 7, 9), generate_with_holes("comb-holes", 500, 300, 7, 9));
   EXPECT_NE(generate_with_holes("comb-holes", 500, 300, 7, 9), generate_with_holes("comb-holes", 500, 300, 7, 10));
+}
+
+TEST(HoleFamilies, HugeRAndHAreRefusedNotWrapped) {
+  const std::size_t huge = std::numeric_limits<std::size_t>::max() - 2;
+  for (const std::string family : {"comb-holes", "convex-holes"}) {
+    EXPECT_THROW(generate_with_holes(family, 100, huge, 1, 1), GeneratorError) << family;
+    EXPECT_THROW(generate_with_holes(family, 100, std::nullopt, huge / 3 + 1, 1), GeneratorError) << family;
+    EXPECT_THROW(generate_with_holes(family, 100, 60, huge / 3 + 1, 1), GeneratorError) << family;
+  }
 }
 
 TEST(HoleFamilies, ChecksumsArePinned) {

@@ -8,7 +8,7 @@ points; the same is done for each operation counter, which does not jitter with 
 Pieces: each valid run is checked against its claimed piece bound ("== n-2", "== r+1", "<= 4*OPT",
 ...) and, for convex decompositions, against the lower bound ceil(r/2)+1-h (h the holes; at least 1;
 docs/holes.md). OPT is taken as the best valid piece count on the same polygon (same family, n, r, h
-and seed) among algorithms of the same kind
+and seed, or the same corpus file) among algorithms of the same kind
 that play by the same rules: a diagonal-only algorithm is compared with diagonal-only ones, an algorithm
 that may add Steiner points with all. Where no optimal algorithm ran on a polygon, that best is only an
 upper bound on OPT, so ratios are then lower than the true approximation ratios.
@@ -97,6 +97,9 @@ class CurveCheck:
                    for _, w in fit.directions(self.fit.names))
 
 
+CORPUS_CURVES = ("vs-n corpus", "vs-n nearest")  # the curves of real polygons (harness/sweep.h)
+
+
 class TimeRow:
     """One algorithm on one family (or one operation counter of it): the exponents fitted on all its
     points, and the verdict.
@@ -105,7 +108,9 @@ class TimeRow:
     against n at a fixed r, or with r a function of n. Fitting them pooled would extrapolate: where a
     family's points at large n all have r close to n, the pooled a (n at fixed r) rests on no data.
     Growth faster than claimed along r at a fixed n is only noted: r <= n bounds it, so it cannot
-    contradict an asymptotic bound by itself. Results without curve labels are checked as one curve."""
+    contradict an asymptotic bound by itself. So is growth on a corpus's real polygons (curves
+    "vs-n corpus" and "vs-n nearest"), whose r varies from polygon to polygon: the fit there is a
+    measurement, not a test of the claim. Results without curve labels are checked as one curve."""
 
     def __init__(self, algorithm, family, claim_text, points, counter=None):
         """points: [(n, r, y, curve labels)]."""
@@ -114,6 +119,7 @@ class TimeRow:
         claim = bound_expr.parse_time_bound(claim_text)
         self.claimed = fit.claimed_exponents(self.fit, claim) if self.fit and claim else None
         self.checks, self.notes = [], []
+        self.real_only = all(label in CORPUS_CURVES for p in points for label in p[3]) and any(p[3] for p in points)
         if claim:
             labels = sorted({label for p in points for label in p[3]}) or ["all"]
             for label in labels:
@@ -122,6 +128,10 @@ class TimeRow:
                     continue
                 if check.verdict.startswith("inconclusive"):
                     self.notes.append("{} {}".format(label, check.verdict))
+                elif label in CORPUS_CURVES:
+                    if check.verdict.startswith("CONTRADICTED"):
+                        self.notes.append("{} grows faster than claimed on these real polygons: {}".format(
+                            label, check.verdict[len("CONTRADICTED: "):]))
                 elif not label.startswith("vs-r"):
                     self.checks.append(check)
                 elif check.verdict.startswith("CONTRADICTED"):
@@ -135,7 +145,7 @@ class TimeRow:
         if not claim:
             return "no claim (bound not understood)"
         if not self.checks:
-            return "too few points"
+            return "measured on real polygons (no verdict)" if self.real_only else "too few points"
         if self.contradictions:
             return "CONTRADICTED: " + "; ".join(self.contradictions)
         if all(c.verdict != "consistent" for c in self.checks):
@@ -468,7 +478,9 @@ def _table(header, rows):
 
 
 def summary_verdict(times, pieces):
-    """One line per algorithm: time contradictions (how many families, and the worst), piece ones."""
+    """One line per algorithm: time contradictions (how many families, and the worst), piece ones. The
+    corpora's rows are measurements without a verdict, and not counted as families here."""
+    times = [t for t in times if not t.real_only]
     bad = []
     contradicted = [t for t in times if t.contradictions]
     if contradicted:
@@ -509,7 +521,8 @@ def render(context, registry, times, ops, pieces, runs, source, refused=()):
     summary = []
     for name in sorted(set(by_algorithm) | set(piece_by_algorithm)):
         rows = by_algorithm.get(name, [])
-        worst = max(rows, key=TimeRow.excess) if rows else None
+        checked = [row for row in rows if row.checks]  # a corpus's fit is no verdict, so never the worst
+        worst = max(checked, key=TimeRow.excess) if checked else None
         p = piece_by_algorithm.get(name)
         summary.append([name, registry[name]["time_bound"],
                         "{} ({})".format(worst.fitted_text(), worst.family) if worst and worst.fit else "-",

@@ -35,7 +35,7 @@ def rejournal(results_dir, sweep, remeasure):
     pattern = re.compile(remeasure) if remeasure else None
     runs = doc.get("benchmarks", [])
     kept = [run for run in runs if not (pattern and pattern.search(run.get("name", "")))]
-    refused = [{"refused": item["file"], "reason": item["reason"]} for item in doc.get("refused", [])]
-    lines = [{"context": doc.get("context", {})}] + refused + kept
+    refusals = [{"refusals": doc["refused"]}] if "refused" in doc else []
+    lines = [{"context": doc.get("context", {})}] + refusals + kept
     results.write_atomic(journal, "".join(json.dumps(line) + "\n" for line in lines))
     return len(kept), len(runs) - len(kept)

@@ -1,8 +1,9 @@
 """Sweep results: the journal polydecomp-bench appends to, and the JSON and CSV assembled from it.
 
 The journal (SWEEP[.shard-I-of-K].journal.jsonl) holds one JSON object per line: {"context": {...}}
-per invocation, {"started": key, ...} before each key, and one Google Benchmark run object per
-finished key with "status" (ok, invalid, failed, skipped), "key_index" and "curves" added. The
+per invocation, {"refusals": [...]} per invocation of a sweep with corpora (the files they refused),
+{"started": key, ...} before each key, and one Google Benchmark run object per finished key with
+"status" (ok, invalid, failed, skipped), "key_index" and "curves" added. The
 assembled SWEEP.json is Google Benchmark's format, {"context": {...}, "benchmarks": [...]}, one run per
 key in sweep order; SWEEP.csv has one row per key. Both are written to a temporary file and renamed,
 so a reader never sees half a file.
@@ -41,8 +42,9 @@ def parse_key(name):
 
 def read_journal(path, refused=None):
     """(contexts, runs by name, started keys without a run) of one journal, and into `refused` (a dict,
-    when given) the corpus files the sweep refused, by "corpus/FILE", with the reason. A torn line (a
-    crash in the middle of a write) is skipped; a later run of a key replaces an earlier one."""
+    when given) the corpus files the latest invocation refused ({"refusals": [...]} lines), by
+    "corpus/FILE", with the reason. A torn line (a crash in the middle of a write) is skipped; a later
+    run of a key replaces an earlier one."""
     contexts, runs, started = [], {}, {}
     with open(path, encoding="utf-8") as f:
         for line in f:
@@ -54,9 +56,10 @@ def read_journal(path, refused=None):
                 contexts.append(obj["context"])
             elif "started" in obj:
                 started[obj["started"]] = obj
-            elif "refused" in obj:
+            elif "refusals" in obj:
                 if refused is not None:
-                    refused[obj["refused"]] = obj.get("reason", "")
+                    refused.clear()
+                    refused.update((item["file"], item["reason"]) for item in obj["refusals"])
             elif "name" in obj:
                 runs[obj["name"]] = obj
     unfinished = [s for name, s in started.items() if name not in runs]
@@ -156,6 +159,8 @@ def to_csv(runs):
                "curves": ";".join(run.get("curves", []))}
         for field in ("algorithm", "family", "file", "n", "r", "h", "seed"):
             row[field] = key.get(field) if key.get(field) is not None else ""
+        if key.get("file") is not None:
+            row["seed"] = ""  # a corpus's key has no seed
         for field in ("n", "r", "pieces", "steiner", "lower_bound", "valid") + tuple(ops):
             if field in run:
                 row[field] = _integer_text(run[field])

@@ -225,6 +225,17 @@ class RealPolygonsTest(unittest.TestCase):
         self.assertEqual(bounds.corpus_rows(runs, refused), [["other", 0, "-", 0, 1], ["real", 5, "10..10", 1, 1]])
 
 
+class RealPolygonsAreMeasuredNotJudgedTest(unittest.TestCase):
+    def test_a_corpus_fit_is_a_note_never_a_contradiction(self):
+        points = [(n, n // 3, 1e-9 * n ** 3, ["vs-n nearest"]) for n in (100, 200, 400, 800, 1600)]
+        row = bounds.TimeRow("a", "dcw", "n", points)
+        self.assertEqual(row.checks, [])
+        self.assertFalse(row.contradicted)
+        self.assertTrue(row.verdict.startswith("measured on real polygons (no verdict) (note: vs-n nearest grows"),
+                        row.verdict)
+        self.assertEqual(bounds.summary_verdict([row], None), "too few points for a time fit")
+
+
 class CurvesAgainstHTest(unittest.TestCase):
     def test_runs_only_on_a_curve_against_h_stay_out_of_the_fits(self):
         def run(n, h, curves):

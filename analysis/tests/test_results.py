@@ -86,12 +86,12 @@ class KeyTest(unittest.TestCase):
                           "seed": 0})
         self.assertIsNone(results.parse_key("keil/dcw/FR-00003.wkt/n:120/r:40"))
 
-    def test_refused_files_are_listed_once_in_the_results(self):
+    def test_the_latest_refusals_are_listed_once_in_the_results_and_kept_by_rejournal(self):
         with tempfile.TemporaryDirectory() as tmp:
             journal = os.path.join(tmp, "s.journal.jsonl")
             run = {"name": "keil/mine/a.txt/n:4/r:0/h:0", "status": "ok", "key_index": 0}
-            lines = [{"context": {}}, {"refused": "mine/b.txt", "reason": "not simple"}, run,
-                     {"context": {}}, {"refused": "mine/b.txt", "reason": "not simple"}]
+            lines = [{"context": {}}, {"refusals": [{"file": "mine/c.txt", "reason": "garbage"}]}, run,
+                     {"context": {}}, {"refusals": [{"file": "mine/b.txt", "reason": "not simple"}]}]
             with open(journal, "w", encoding="utf-8") as f:
                 f.write("".join(json.dumps(line) + "\n" for line in lines))
             self.assertEqual(results.assemble([journal], os.path.join(tmp, "s")), 1)
@@ -99,7 +99,12 @@ class KeyTest(unittest.TestCase):
                              [{"file": "mine/b.txt", "reason": "not simple"}])
             with open(os.path.join(tmp, "s.csv"), encoding="utf-8") as f:
                 row = next(csv.DictReader(f))
-            self.assertEqual((row["family"], row["file"], row["seed"]), ("mine", "a.txt", "0"))
+            self.assertEqual((row["family"], row["file"], row["seed"]), ("mine", "a.txt", ""))
+            os.remove(journal)
+            rejournal.rejournal(tmp, "s", None)
+            results.assemble([journal], os.path.join(tmp, "s"))
+            self.assertEqual(results.load_refused(os.path.join(tmp, "s.json")),
+                             [{"file": "mine/b.txt", "reason": "not simple"}])
 
 
 class RejournalTest(unittest.TestCase):

@@ -3,7 +3,7 @@
 // `naive-chains` (ray shooting, engines/naive/naive_chains.cpp) and Chazelle-Dobkin's pattern tests (segments against
 // the boundary, engines/chazelle_dobkin/patterns.h).
 //
-// A chain has `edges` edges from polygon vertex `start` on, counter-clockwise, such that every prefix
+// A chain has `edges` edges from polygon vertex `start` on, along its ring, such that every prefix
 // closes into a convex polygon: its edge directions turn counter-clockwise through less than a full
 // turn, so, measured from its first edge, they are sorted by angle, and a line meets it in O(log k)
 // binary-search steps for k edges (Chapter 4, where the thesis does this, is not part of the text we
