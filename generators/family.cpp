@@ -30,6 +30,18 @@ std::string all_family_names() {
 
 }  // namespace
 
+Family outcome_family(std::string name, std::string shape, std::size_t min_n, std::size_t max_n,
+                      std::function<std::vector<Point>(std::size_t n, std::uint64_t seed)> make) {
+  Family f{std::move(name), std::move(shape), min_n, max_n, "r an outcome of the method", false};
+  f.r_is_outcome = true;
+  f.r_infeasible = [](std::size_t, std::size_t) -> std::optional<std::string> {
+    return "r is an outcome of the method, never chosen";
+  };
+  f.default_reflex = [](std::size_t) { return std::size_t{0}; };
+  f.make = [make = std::move(make)](std::size_t n, std::size_t, std::uint64_t seed) { return make(n, seed); };
+  return f;
+}
+
 std::string Family::range() const {
   return std::to_string(min_n) + " <= n <= " + std::to_string(max_n) + ", " + r_range;
 }

@@ -51,6 +51,11 @@ struct Family {
   std::optional<std::string> infeasible(std::size_t n, std::size_t r) const;
 };
 
+// A family whose r is an outcome of its method: feasible for min_n <= n <= max_n at whatever r the
+// method gives; its r_infeasible refuses every r asked for in a grid.
+Family outcome_family(std::string name, std::string shape, std::size_t min_n, std::size_t max_n,
+                      std::function<std::vector<Point>(std::size_t n, std::uint64_t seed)> make);
+
 const std::vector<Family>& families();  // sorted by name
 const Family* find_family(const std::string& name);
 bool register_family(Family f);

@@ -13,13 +13,6 @@ void translate(std::vector<Vec>& v, Vec by) {
   for (Vec& p : v) p = p + by;
 }
 
-Ring points_of(const std::vector<Vec>& v) {
-  Ring ring;
-  ring.reserve(v.size());
-  for (const Vec& p : v) ring.emplace_back(static_cast<double>(p.x), static_cast<double>(p.y));
-  return ring;
-}
-
 HoleGrid::HoleGrid(std::size_t r, std::size_t h, Rng& rng) {
   for (const std::size_t k : balanced_split(r, h, rng)) {
     holes.push_back(convex_lattice_polygon(k, rng));

@@ -17,7 +17,6 @@ struct Box {
 
 Box box_of(const std::vector<Vec>& v);
 void translate(std::vector<Vec>& v, Vec by);
-Ring points_of(const std::vector<Vec>& v);
 
 // h strictly convex lattice polygons with r vertices in all (shared out as evenly as the seed allows,
 // each at least 3; pre: 3h <= r), counter-clockwise, each with its box's corner at the origin, and the

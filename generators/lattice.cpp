@@ -106,6 +106,33 @@ std::vector<Point> centred_points(const std::vector<Vec>& vertices) {
   return points;
 }
 
+std::vector<Point> points_of(const std::vector<Vec>& vertices) {
+  std::vector<Point> points;
+  points.reserve(vertices.size());
+  for (const Vec& p : vertices) points.emplace_back(static_cast<double>(p.x), static_cast<double>(p.y));
+  return points;
+}
+
+std::vector<Vec> distinct_random_points(std::size_t n, std::int64_t half_side, Rng& rng) {
+  std::vector<Vec> v;
+  const auto less = [](Vec a, Vec b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
+  const auto same = [](Vec a, Vec b) { return a.x == b.x && a.y == b.y; };
+  while (v.size() < n) {
+    while (v.size() < n) v.push_back({rng.between(-half_side, half_side), rng.between(-half_side, half_side)});
+    std::sort(v.begin(), v.end(), less);
+    v.erase(std::unique(v.begin(), v.end(), same), v.end());
+  }
+  shuffle(v, rng);
+  return v;
+}
+
+bool has_collinear_vertices(const std::vector<Vec>& cycle) {
+  const std::size_t n = cycle.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (cross(cycle[(i + 1) % n] - cycle[i], cycle[(i + 2) % n] - cycle[(i + 1) % n]) == 0) return true;
+  return false;
+}
+
 Vec primitive_direction(Vec v) {
   const std::int64_t g = std::gcd(v.x, v.y);
   return {v.x / g, v.y / g};

@@ -113,6 +113,15 @@ std::vector<Vec> convex_arc(std::size_t interior, std::int64_t length, const std
 // Points for the vertices, translated so that the bounding box is centred on the origin.
 std::vector<Point> centred_points(const std::vector<Vec>& vertices);
 
+// Points for the vertices, as they are.
+std::vector<Point> points_of(const std::vector<Vec>& vertices);
+
+// n distinct lattice points drawn uniformly from the square [-half_side, half_side]^2, in random order.
+std::vector<Vec> distinct_random_points(std::size_t n, std::int64_t half_side, Rng& rng);
+
+// Whether some three consecutive vertices of the cycle are collinear.
+bool has_collinear_vertices(const std::vector<Vec>& cycle);
+
 // A polygon template, counter-clockwise, whose chosen edges may bulge outward as convex arcs to take
 // extra vertices (x-pattern, x2-pairs). bulges[i] says whether edge i -> i+1 may bulge.
 struct Outline {

@@ -30,19 +30,6 @@ using gen::Vec;
 constexpr std::int64_t kHalfSide = std::int64_t{1} << 29;
 constexpr std::int64_t kSplits = std::int64_t{1} << 20;  // the split point's denominator
 
-std::vector<Vec> distinct_points(std::size_t n, Rng& rng) {
-  std::vector<Vec> v;
-  const auto less = [](Vec a, Vec b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
-  const auto same = [](Vec a, Vec b) { return a.x == b.x && a.y == b.y; };
-  while (v.size() < n) {
-    while (v.size() < n) v.push_back({rng.between(-kHalfSide, kHalfSide), rng.between(-kHalfSide, kHalfSide)});
-    std::sort(v.begin(), v.end(), less);
-    v.erase(std::unique(v.begin(), v.end(), same), v.end());
-  }
-  gen::shuffle(v, rng);
-  return v;
-}
-
 // The sign of cross(q - c, p - c) for the split point q = a + k (b - a) / kSplits, scaled by kSplits.
 int side_of_split(Vec a, Vec b, std::int64_t k, Vec c, Vec p) {
   const __int128 qx = static_cast<__int128>(kSplits) * (a.x - c.x) + static_cast<__int128>(k) * (b.x - a.x);
@@ -99,15 +86,9 @@ bool append_chain(Vec a, Vec b, std::vector<Vec> inside, Rng& rng, std::vector<V
   return true;
 }
 
-bool without_collinear_vertices(const std::vector<Vec>& v) {
-  for (std::size_t i = 0; i < v.size(); ++i)
-    if (gen::cross(v[(i + 1) % v.size()] - v[i], v[(i + 2) % v.size()] - v[(i + 1) % v.size()]) == 0) return false;
-  return true;
-}
-
 // The polygon, or nothing when a draw met a collinear point on the way.
 std::optional<std::vector<Vec>> partition_polygon(std::size_t n, Rng& rng) {
-  std::vector<Vec> points = distinct_points(n, rng);
+  std::vector<Vec> points = gen::distinct_random_points(n, kHalfSide, rng);
   while (true) {
     const Vec s = points[0], t = points[1];
     std::vector<Vec> left, right;
@@ -130,31 +111,18 @@ std::optional<std::vector<Vec>> partition_polygon(std::size_t n, Rng& rng) {
   }
 }
 
-std::vector<Point> make_space_partition(std::size_t n, std::size_t, std::uint64_t seed) {
+std::vector<Point> make_space_partition(std::size_t n, std::uint64_t seed) {
   Rng rng(seed);
   std::optional<std::vector<Vec>> drawn;
   do drawn = partition_polygon(n, rng);
-  while (!drawn || !without_collinear_vertices(*drawn));
-  const std::vector<Vec>& polygon = *drawn;
-  std::vector<Point> ring;
-  ring.reserve(n);
-  for (const Vec& p : polygon) ring.emplace_back(static_cast<double>(p.x), static_cast<double>(p.y));
-  return ring;
+  while (!drawn || gen::has_collinear_vertices(*drawn));
+  return gen::points_of(*drawn);
 }
 
 }  // namespace
 
-REGISTER_FAMILY({.name = "space-partition",
-                 .shape = "random points joined by chains in recursively split half-planes (RPG's space partitioning)",
-                 .min_n = 3,
-                 .max_n = gen::kMaxVertices,
-                 .r_range = "r an outcome of the method",
-                 .controls_r = false,
-                 .r_is_outcome = true,
-                 .r_infeasible = [](std::size_t, std::size_t) -> std::optional<std::string> {
-                   return "r is an outcome of the method, never chosen";
-                 },
-                 .default_reflex = [](std::size_t) { return std::size_t{0}; },
-                 .make = make_space_partition});
+REGISTER_FAMILY(outcome_family("space-partition",
+                               "random points joined by chains in recursively split half-planes (RPG's space partitioning)",
+                               3, gen::kMaxVertices, make_space_partition));
 
 }  // namespace pd

@@ -38,32 +38,20 @@ bool star_shaped(const std::vector<gen::Vec>& v) {
   return true;
 }
 
-std::vector<Point> make_star(std::size_t n, std::size_t, std::uint64_t seed) {
+std::vector<Point> make_star(std::size_t n, std::uint64_t seed) {
   Rng rng(seed);
   std::vector<gen::Vec> v(n);
   do {
     for (gen::Vec& p : v) p = point_in_disc(rng);
     std::sort(v.begin(), v.end(), gen::angle_less);
   } while (!star_shaped(v));
-  std::vector<Point> ring;
-  ring.reserve(n);
-  for (const gen::Vec& p : v) ring.emplace_back(static_cast<double>(p.x), static_cast<double>(p.y));
-  return ring;
+  return gen::points_of(v);
 }
 
 }  // namespace
 
-REGISTER_FAMILY({.name = "star",
-                 .shape = "random points in a disc joined in the order of their angles about its centre (RPG's star)",
-                 .min_n = 3,
-                 .max_n = gen::kMaxVertices,
-                 .r_range = "r an outcome of the method",
-                 .controls_r = false,
-                 .r_is_outcome = true,
-                 .r_infeasible = [](std::size_t, std::size_t) -> std::optional<std::string> {
-                   return "r is an outcome of the method, never chosen";
-                 },
-                 .default_reflex = [](std::size_t) { return std::size_t{0}; },
-                 .make = make_star});
+REGISTER_FAMILY(outcome_family("star",
+                               "random points in a disc joined in the order of their angles about its centre (RPG's star)",
+                               3, gen::kMaxVertices, make_star));
 
 }  // namespace pd

@@ -49,19 +49,6 @@ int meeting(Vec a, Vec b, Vec c, Vec d) {
   return 0;
 }
 
-std::vector<Vec> distinct_points(std::size_t n, Rng& rng) {
-  std::vector<Vec> v;
-  const auto less = [](Vec a, Vec b) { return a.x != b.x ? a.x < b.x : a.y < b.y; };
-  const auto same = [](Vec a, Vec b) { return a.x == b.x && a.y == b.y; };
-  while (v.size() < n) {
-    while (v.size() < n) v.push_back({rng.between(-kHalfSide, kHalfSide), rng.between(-kHalfSide, kHalfSide)});
-    std::sort(v.begin(), v.end(), less);
-    v.erase(std::unique(v.begin(), v.end(), same), v.end());
-  }
-  gen::shuffle(v, rng);
-  return v;
-}
-
 // One pass over the pairs of non-adjacent edges, a 2-opt move at each crossing found. Returns the
 // number of moves, or nothing when a degenerate contact was met.
 std::optional<std::size_t> untangle_pass(std::vector<Vec>& tour) {
@@ -82,51 +69,33 @@ std::optional<std::size_t> untangle_pass(std::vector<Vec>& tour) {
   return moves;
 }
 
-bool without_collinear_vertices(const std::vector<Vec>& v) {
-  for (std::size_t i = 0; i < v.size(); ++i)
-    if (gen::cross(v[(i + 1) % v.size()] - v[i], v[(i + 2) % v.size()] - v[(i + 1) % v.size()]) == 0) return false;
-  return true;
-}
-
 // The untangled tour, or nothing when the draw met a degenerate contact.
 std::optional<std::vector<Vec>> untangled(std::size_t n, Rng& rng) {
-  std::vector<Vec> tour = distinct_points(n, rng);
+  std::vector<Vec> tour = gen::distinct_random_points(n, kHalfSide, rng);
   while (true) {
     const std::optional<std::size_t> moves = untangle_pass(tour);
     if (!moves) return std::nullopt;
     if (*moves == 0) break;
   }
-  if (!without_collinear_vertices(tour)) return std::nullopt;
+  if (gen::has_collinear_vertices(tour)) return std::nullopt;
   __int128 twice_area = 0;
   for (std::size_t i = 0; i < n; ++i) twice_area += gen::cross(tour[i], tour[(i + 1) % n]);
   if (twice_area < 0) std::reverse(tour.begin(), tour.end());
   return tour;
 }
 
-std::vector<Point> make_two_opt(std::size_t n, std::size_t, std::uint64_t seed) {
+std::vector<Point> make_two_opt(std::size_t n, std::uint64_t seed) {
   Rng rng(seed);
   std::optional<std::vector<Vec>> tour;
   while (!(tour = untangled(n, rng))) {
   }
-  std::vector<Point> ring;
-  ring.reserve(n);
-  for (const Vec& p : *tour) ring.emplace_back(static_cast<double>(p.x), static_cast<double>(p.y));
-  return ring;
+  return gen::points_of(*tour);
 }
 
 }  // namespace
 
-REGISTER_FAMILY({.name = "2-opt",
-                 .shape = "a random tour of random points untangled by 2-opt moves (RPG's 2-opt)",
-                 .min_n = 3,
-                 .max_n = kMaxVertices,
-                 .r_range = "r an outcome of the method",
-                 .controls_r = false,
-                 .r_is_outcome = true,
-                 .r_infeasible = [](std::size_t, std::size_t) -> std::optional<std::string> {
-                   return "r is an outcome of the method, never chosen";
-                 },
-                 .default_reflex = [](std::size_t) { return std::size_t{0}; },
-                 .make = make_two_opt});
+REGISTER_FAMILY(outcome_family("2-opt",
+                               "a random tour of random points untangled by 2-opt moves (RPG's 2-opt)",
+                               3, kMaxVertices, make_two_opt));
 
 }  // namespace pd
