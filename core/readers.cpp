@@ -96,8 +96,10 @@ Ring parse_txt(std::string_view content) {
       count = static_cast<std::size_t>(c);
       continue;
     }
-    if (fields.size() != 2)
+    if (fields.size() != 2) {
+      for (const auto& field : fields) coordinate(field, where);  // a word is named as such, not counted
       bad(where() + "expected 'x y', found " + std::to_string(fields.size()) + " numbers");
+    }
     const double x = coordinate(fields[0], where);
     ring.emplace_back(x, coordinate(fields[1], where));
   }

@@ -44,6 +44,7 @@ TEST(Readers, PlainTextErrors) {
   EXPECT_EQ(error_of("  \n# nothing\n"), "the input holds no vertices");
   EXPECT_EQ(error_of("0 0\n1 x\n"), "line 2: 'x' is not a number");
   EXPECT_EQ(error_of("0 0 0\n"), "line 1: expected 'x y', found 3 numbers");
+  EXPECT_EQ(error_of("not a polygon\n"), "line 1: 'not' is not a number");
   EXPECT_EQ(error_of("4\n0 0\n1 0\n0 1\n"), "the count line says 4 vertices but 3 follow");
   EXPECT_EQ(error_of("2\n0 0\n1 0\n0 1\n0 0\n"), "the count line says 2 vertices but 4 follow");
 }
