@@ -26,6 +26,9 @@ std::vector<Rings> parse_parts(const std::string& content);
 // a NUL byte (binary data, /dev/zero) are PolygonErrors too.
 std::vector<Rings> read_parts_file(const std::string& path);
 
+// A file's bytes as they are, or nothing when it cannot be opened (for the callers' own messages).
+std::optional<std::string> read_file_bytes(const std::string& path);
+
 enum class Format { Txt, Wkt, GeoJson };
 Format parse_format(const std::string& name);  // throws std::invalid_argument
 // The rings (the outer ring, then its holes) in format f, each ring closed where the format wants it.

@@ -32,23 +32,38 @@ std::string all_family_names() {
 
 Family outcome_family(std::string name, std::string shape, std::size_t min_n, std::size_t max_n,
                       std::function<std::vector<Point>(std::size_t n, std::uint64_t seed)> make) {
-  Family f{std::move(name), std::move(shape), min_n, max_n, "r an outcome of the method", false};
-  f.r_is_outcome = true;
-  f.r_infeasible = [](std::size_t, std::size_t) -> std::optional<std::string> {
-    return "r is an outcome of the method, never chosen";
-  };
-  f.default_reflex = [](std::size_t) { return std::size_t{0}; };
-  f.make = [make = std::move(make)](std::size_t n, std::size_t, std::uint64_t seed) { return make(n, seed); };
-  return f;
+  return {.name = std::move(name),
+          .shape = std::move(shape),
+          .min_n = min_n,
+          .max_n = max_n,
+          .r_range = "r an outcome of the method",
+          .controls_r = false,
+          .r_is_outcome = true,
+          .r_infeasible = [](std::size_t, std::size_t) -> std::optional<std::string> {
+            return "r is an outcome of the method, never chosen";
+          },
+          .default_reflex = [](std::size_t) { return std::size_t{0}; },
+          .make = [make = std::move(make)](std::size_t n, std::size_t, std::uint64_t seed) { return make(n, seed); }};
 }
 
 std::string Family::range() const {
   return std::to_string(min_n) + " <= n <= " + std::to_string(max_n) + ", " + r_range;
 }
 
-std::optional<std::string> Family::infeasible(std::size_t n, std::size_t r) const {
+namespace {
+
+std::optional<std::string> n_outside(std::size_t n, std::size_t min_n, std::size_t max_n) {
   if (n < min_n) return "n must be at least " + std::to_string(min_n);
   if (n > max_n) return "n must be at most " + std::to_string(max_n);
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> Family::n_infeasible(std::size_t n) const { return n_outside(n, min_n, max_n); }
+
+std::optional<std::string> Family::infeasible(std::size_t n, std::size_t r) const {
+  if (const auto why = n_infeasible(n)) return why;
   return r_infeasible(n, r);
 }
 
@@ -82,7 +97,7 @@ const Family& family_named(const std::string& family) {
 
 // A family whose r is an outcome: n in range, and r, when asked for, the one the method gives.
 std::vector<Point> generate_outcome(const Family& f, std::size_t n, std::optional<std::size_t> r, std::uint64_t seed) {
-  if (n < f.min_n || n > f.max_n)
+  if (f.n_infeasible(n))
     throw GeneratorError("family " + f.name + " cannot make n=" + std::to_string(n) + ": feasible " + f.range());
   std::vector<Point> polygon = f.make(n, 0, seed);
   check_output(f.name, n, {polygon});
@@ -118,8 +133,7 @@ std::string HoleFamily::range() const {
 }
 
 std::optional<std::string> HoleFamily::infeasible(std::size_t n, std::size_t r, std::size_t h) const {
-  if (n < min_n) return "n must be at least " + std::to_string(min_n);
-  if (n > max_n) return "n must be at most " + std::to_string(max_n);
+  if (const auto why = n_outside(n, min_n, max_n)) return why;
   return rh_infeasible(n, r, h);
 }
 

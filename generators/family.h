@@ -49,6 +49,8 @@ struct Family {
   std::string range() const;
   // Why (n, r) cannot be realised, or nothing when it can.
   std::optional<std::string> infeasible(std::size_t n, std::size_t r) const;
+  // Why n is outside [min_n, max_n], or nothing (for a family whose r is an outcome, all it checks).
+  std::optional<std::string> n_infeasible(std::size_t n) const;
 };
 
 // A family whose r is an outcome of its method: feasible for min_n <= n <= max_n at whatever r the

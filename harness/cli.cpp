@@ -731,11 +731,9 @@ int cmd_corpus(const std::vector<std::string>& args) {
   if (!f)
     throw Exit{kBadPolygon, "corpus " + quoted_input(c.name) + " accepts " + std::to_string(c.accepted().size()) +
                                 " files; none is at rank " + std::to_string(rank) + " from n=" + std::to_string(n)};
-  std::ifstream in(f->path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw Exit{kBadPolygon, "cannot read " + f->path};
-  emit(text.str(), vm["output"].as<std::string>());
+  const std::optional<std::string> text = read_file_bytes(f->path);
+  if (!text) throw Exit{kBadPolygon, "cannot read " + f->path};
+  emit(*text, vm["output"].as<std::string>());
   return 0;
 }
 

@@ -1,6 +1,7 @@
 #include "harness/plugins.h"
 
 #include "core/coordinate.h"
+#include "core/io.h"
 #include "core/json.h"
 #include "core/registry.h"
 #include "harness/write_all.h"
@@ -17,7 +18,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
@@ -29,11 +29,9 @@ namespace fs = std::filesystem;
 // ---- the manifest ----
 
 std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw PluginError(path.string() + ": cannot read it");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  std::optional<std::string> text = read_file_bytes(path.string());
+  if (!text) throw PluginError(path.string() + ": cannot read it");
+  return std::move(*text);
 }
 
 class ManifestReader {

@@ -1,5 +1,6 @@
 #include "harness/sweep.h"
 
+#include "core/io.h"
 #include "core/json.h"
 #include "core/registry.h"
 #include "generators/family.h"
@@ -7,7 +8,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -16,11 +16,9 @@ namespace pd {
 namespace {
 
 std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SweepError("cannot read sweeps file " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  std::optional<std::string> text = read_file_bytes(path);
+  if (!text) throw SweepError("cannot read sweeps file " + path);
+  return std::move(*text);
 }
 
 const Json& member(const Json& object, const std::string& key, const std::string& where) {
@@ -325,7 +323,7 @@ std::optional<std::size_t> feasible_reflex(const std::string& family_name, const
   }
   const Family& f = *find_family(family_name);
   if (f.r_is_outcome) {
-    if (at.rule != "default" || at.n < f.min_n || at.n > f.max_n) return std::nullopt;
+    if (at.rule != "default" || f.n_infeasible(at.n)) return std::nullopt;
     return reflex_outcome(f.name, at.n, seed);
   }
   const std::size_t r = resolve_reflex(at.rule, f.default_reflex(at.n), at.n);

@@ -114,9 +114,10 @@ constexpr std::size_t kShortChain = 8;
 }  // namespace
 
 void split_into_chains(const Polygon& p, std::vector<VertexId>& notches, std::vector<Chain>& chains) {
+  // Every hole has notches (a clockwise ring turns right somewhere), so a ring without one is the
+  // outer ring, and it needs a chain only when there are holes: a convex polygon has no shot to search.
   for (std::size_t ring = 0; ring < p.ring_count(); ++ring)
-    if (!ChainBuilder(p, ring).build(notches, chains)) chains.push_back(whole_ring(p, ring));
-  if (notches.empty()) chains.clear();
+    if (!ChainBuilder(p, ring).build(notches, chains) && p.hole_count() > 0) chains.push_back(whole_ring(p, ring));
 }
 
 SegmentSearch::SegmentSearch(const Polygon& p, const std::vector<QPoint>& exact) : p_(p), exact_(exact) {
