@@ -607,9 +607,9 @@ def _failures_table(failed):
 
 
 def write_bounds(results_path, registry, out_path):
-    context, runs = results.load(results_path)
+    refused = []
+    context, runs = results.load(results_path, refused)
     times, ops = time_rows(runs, registry)
     pieces = piece_rows(runs, registry)
-    results.write_atomic(out_path, render(context, registry, times, ops, pieces, runs, results_path,
-                                          results.load_refused(results_path)))
+    results.write_atomic(out_path, render(context, registry, times, ops, pieces, runs, results_path, refused))
     return times, ops, pieces

@@ -202,16 +202,14 @@ class Run:
         return self.status in ("ok", "invalid")
 
 
-def load_refused(path):
-    """The corpus files a results file lists as refused: [{"file": "corpus/FILE", "reason": ...}]."""
-    with open(path, encoding="utf-8") as f:
-        return json.load(f).get("refused", [])
-
-
-def load(path):
-    """(context, [Run]) of an assembled results file; keys not named algorithm/family/n:/r:/seed: or
-    algorithm/corpus/file/n:/r:/h: are ignored (e.g. a hand-added Google Benchmark entry)."""
+def load(path, refused=None):
+    """(context, [Run]) of an assembled results file, and into `refused` (a list, when given) the
+    corpus files it lists as refused, [{"file": "corpus/FILE", "reason": ...}]; keys not named
+    algorithm/family/n:/r:/seed: or algorithm/corpus/file/n:/r:/h: are ignored (e.g. a hand-added
+    Google Benchmark entry)."""
     with open(path, encoding="utf-8") as f:
         doc = json.load(f)
+    if refused is not None:
+        refused.extend(doc.get("refused", []))
     runs = [Run(b) for b in doc.get("benchmarks", []) if parse_key(b.get("name", ""))]
     return doc.get("context", {}), runs

@@ -95,16 +95,18 @@ class KeyTest(unittest.TestCase):
             with open(journal, "w", encoding="utf-8") as f:
                 f.write("".join(json.dumps(line) + "\n" for line in lines))
             self.assertEqual(results.assemble([journal], os.path.join(tmp, "s")), 1)
-            self.assertEqual(results.load_refused(os.path.join(tmp, "s.json")),
-                             [{"file": "mine/b.txt", "reason": "not simple"}])
+            refused = []
+            results.load(os.path.join(tmp, "s.json"), refused)
+            self.assertEqual(refused, [{"file": "mine/b.txt", "reason": "not simple"}])
             with open(os.path.join(tmp, "s.csv"), encoding="utf-8") as f:
                 row = next(csv.DictReader(f))
             self.assertEqual((row["family"], row["file"], row["seed"]), ("mine", "a.txt", ""))
             os.remove(journal)
             rejournal.rejournal(tmp, "s", None)
             results.assemble([journal], os.path.join(tmp, "s"))
-            self.assertEqual(results.load_refused(os.path.join(tmp, "s.json")),
-                             [{"file": "mine/b.txt", "reason": "not simple"}])
+            refused = []
+            results.load(os.path.join(tmp, "s.json"), refused)
+            self.assertEqual(refused, [{"file": "mine/b.txt", "reason": "not simple"}])
 
 
 class RejournalTest(unittest.TestCase):
