@@ -1,9 +1,10 @@
 // Polygon families for benchmarks and tests.
 //
 // Each family makes a simple counter-clockwise polygon with exactly n vertices, integer coordinates
-// (|x|, |y| < 2^31) and, where the family controls it, exactly r reflex vertices. Output depends only
-// on (n, r, seed): the project's own PRNG and integer arithmetic, never std::*_distribution, so the same
-// arguments give the same bytes on every machine. Each family file registers itself.
+// (|x|, |y| < 2^31), no three consecutive vertices collinear (generate_with_collinear asks for them)
+// and, where the family controls it, exactly r reflex vertices. Output depends only on (n, r, seed):
+// the project's own PRNG and integer arithmetic, never std::*_distribution, so the same arguments give
+// the same bytes on every machine. Each family file registers itself.
 //
 // The random polygons of Auer and Held's generators (star, space-partition, 2-opt) do not choose r: r
 // is what the method gives (r_is_outcome). Their r_infeasible refuses every r that is asked for, so that
@@ -67,6 +68,13 @@ bool register_family(Family f);
 // family whose r is an outcome, an r asked for must be the one the method gives, else GeneratorError.
 std::vector<Point> generate(const std::string& family, std::size_t n, std::optional<std::size_t> r,
                             std::uint64_t seed);
+
+// The polygon of `family` with k collinear (180-degree) vertices: the family's polygon of n - k vertices
+// (at r, or its default r at n - k), coordinates doubled, k of its edges (chosen by the seed) split at
+// their midpoints; r unchanged. k = 0 is generate(). Throws GeneratorError when k > n/2 or the doubled
+// coordinates would reach 2^31, and as generate does.
+std::vector<Point> generate_with_collinear(const std::string& family, std::size_t n, std::optional<std::size_t> r,
+                                           std::size_t k, std::uint64_t seed);
 
 // The r that family `family`, whose r is an outcome, gives at (n, seed) (by making the polygon).
 std::size_t reflex_outcome(const std::string& family, std::size_t n, std::uint64_t seed);

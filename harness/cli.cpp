@@ -80,7 +80,7 @@ void validate(boost::any& v, const std::vector<std::string>& values, Count*, int
 
 const char* kUsageText =
     "usage: polydecomp list [--json | --markdown] [--plugins DIR]...\n"
-    "       polydecomp generate --family F --n N [--reflex R] [--holes H] [--seed S] [--format txt|wkt|geojson] [-o FILE]\n"
+    "       polydecomp generate --family F --n N [--reflex R] [--holes H] [--collinear K] [--seed S] [--format txt|wkt|geojson] [-o FILE]\n"
     "       polydecomp run --algorithm A --input FILE|- [--json] [--svg FILE] [--no-validate] [--max-seconds S]\n"
     "                      [--max-memory SIZE] [--plugins DIR]...\n"
     "       polydecomp cut --input FILE [--weights reflex|all|FILE] [--vertical] [--json]\n"
@@ -249,7 +249,8 @@ int cmd_generate(const std::vector<std::string>& args) {
   po::options_description opts;
   opts.add_options()("family", po::value<std::string>()->required(), "family")(
       "n", po::value<Count>()->required(), "vertices")("reflex", po::value<Count>(), "reflex vertices")(
-      "holes", po::value<Count>(), "holes (families with holes)")("seed", po::value<Count>()->default_value(Count{1}, "1"), "seed")(
+      "holes", po::value<Count>(), "holes (families with holes)")(
+      "collinear", po::value<Count>(), "K 180-degree vertices, edge midpoints (families without holes)")("seed", po::value<Count>()->default_value(Count{1}, "1"), "seed")(
       "format", po::value<std::string>()->default_value("txt"), "txt|wkt|geojson")(
       "output,o", po::value<std::string>()->default_value(""), "file")("help,h", "this help");
   const auto vm = parse("generate", args, opts);
@@ -266,9 +267,14 @@ int cmd_generate(const std::vector<std::string>& args) {
   if (reflex && find_family(family) && find_family(family)->r_is_outcome)
     usage("family " + family + " does not choose r: it is an outcome of the method (leave out --reflex; " +
           "polydecomp check counts it)");
+  if (vm.count("collinear") && holes)
+    usage("--collinear and --holes do not go together: collinear vertices are made for families without holes");
+  const std::size_t n = vm["n"].as<Count>().value;
+  const std::uint64_t seed = vm["seed"].as<Count>().value;
   Rings rings;
   try {
-    rings = generate_with_holes(family, vm["n"].as<Count>().value, reflex, holes, vm["seed"].as<Count>().value);
+    rings = vm.count("collinear") ? Rings{generate_with_collinear(family, n, reflex, vm["collinear"].as<Count>().value, seed)}
+                                  : generate_with_holes(family, n, reflex, holes, seed);
   } catch (const std::invalid_argument& e) {
     usage(e.what());
   }

@@ -157,6 +157,21 @@ TEST_P(EveryAlgorithm, IsValidOnEveryFamily) {
   EXPECT_GT(ran, 0u);
 }
 
+// 180-degree vertices (generate --collinear) on every family: neither convex nor reflex, and no
+// algorithm may take one for a notch or drop it from the pieces.
+TEST_P(EveryAlgorithm, IsValidWithCollinearVertices) {
+  const Algorithm& a = *find_algorithm(GetParam());
+  std::size_t ran = 0;
+  for (const Family& f : families())
+    for (std::uint64_t seed : {1, 2}) {
+      const Polygon p = Polygon::make(generate_with_collinear(f.name, 24, std::nullopt, 8, seed));
+      if (refusal(a, p) || !within_test_budget(a, p)) continue;
+      run_and_check(a, p, a.name + " on " + f.name + " with 8 collinear vertices, seed=" + std::to_string(seed));
+      ++ran;
+    }
+  EXPECT_GT(ran, 0u);
+}
+
 // An optimal program's piece count cannot depend on the starting vertex (CGAL issue 4398, which is
 // why the peer is not held to it).
 class OurOptimalProgram : public ::testing::TestWithParam<std::string> {};

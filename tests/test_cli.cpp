@@ -148,6 +148,18 @@ TEST_F(Cli, GenerateIsDeterministicAndNamesTheFeasibleRange) {
   EXPECT_EQ(cli("generate --family convex --n -4").status, 2);
 }
 
+TEST_F(Cli, GenerateMakesCollinearVerticesOnRequest) {
+  const fs::path out = dir_ / "flat.txt";
+  ASSERT_EQ(cli("generate --family star --n 40 --collinear 10 --seed 3 -o " + out.string()).status, 0);
+  const Result plain = cli("generate --family star --n 30 --seed 3 -o " + (dir_ / "plain.txt").string());
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const Result flat = cli("check --input " + out.string()), base = cli("check --input " + (dir_ / "plain.txt").string());
+  EXPECT_EQ(flat.out, "polygon: n=40" + base.out.substr(base.out.find(" reflex=")));
+  expect_error("generate --family star --n 10 --collinear 6", 2, "at n=10 at most n/2 = 5 vertices can be collinear (one on an edge of the polygon of n - k vertices), not 6");
+  expect_error("generate --family convex-holes --n 30 --holes 2 --collinear 2", 2, "--collinear and --holes do not go together: collinear vertices are made for families without holes");
+  expect_error("generate --family star --n 12 --reflex 4", 2, "family star does not choose r: it is an outcome of the method (leave out --reflex; polydecomp check counts it)");
+}
+
 TEST_F(Cli, BadPolygonsGetOneErrorLineAndExit3) {
   expect_error("run --algorithm ear-n2 --input " + file("bow.txt", "0 0\n2 2\n2 0\n0 2\n").string(), 3,
                "not simple: edge 0-1 crosses edge 2-3");

@@ -416,6 +416,31 @@ TEST(OutcomeFamilies, ChecksumsArePinned) {
   EXPECT_EQ(fnv1a(generate("2-opt", 500, std::nullopt, 1)), 0x159883b530287fceULL);
 }
 
+// Collinear vertices on request: exactly n vertices, k of them at 180 degrees, r unchanged, simple and
+// counter-clockwise, the family's own polygon of n - k vertices underneath; k = 0 is generate().
+TEST(CollinearVertices, AreExactlyTheOnesAskedFor) {
+  for (const Family& f : families())
+    for (const std::size_t k : {1, 8, 20}) {
+      SCOPED_TRACE(f.name + " k=" + std::to_string(k));
+      const std::vector<Point> base = generate(f.name, 40, std::nullopt, 3);
+      const std::vector<Point> polygon = generate_with_collinear(f.name, 40 + k, std::nullopt, k, 3);
+      ASSERT_EQ(polygon.size(), 40 + k);
+      const std::vector<IntPoint> v = integer_points(polygon);
+      EXPECT_EQ(collinear_count(v), k);
+      EXPECT_EQ(reflex_count(polygon), reflex_count(base));
+      EXPECT_GT(twice_signed_area(v), 0);
+      EXPECT_EQ(simplicity_problem(v), "");
+      EXPECT_NO_THROW(Polygon::make(polygon));
+      EXPECT_EQ(polygon, generate_with_collinear(f.name, 40 + k, std::nullopt, k, 3));
+    }
+  EXPECT_EQ(generate_with_collinear("comb", 30, 9, 0, 2), generate("comb", 30, 9, 2));
+  EXPECT_THROW(generate_with_collinear("comb", 30, 4, 16, 2), GeneratorError);
+  EXPECT_THROW(generate_with_collinear("star", 30, 0, 5, 2), GeneratorError);
+  EXPECT_THROW(generate_with_collinear("convex-holes", 30, std::nullopt, 5, 2), std::invalid_argument);
+  EXPECT_EQ(fnv1a(generate_with_collinear("star", 1000, std::nullopt, 300, 1)), 0x0e6a2644f275a1e5ULL);
+  EXPECT_EQ(fnv1a(generate_with_collinear("random", 1000, 200, 100, 1)), 0x45039715b4be2a1eULL);
+}
+
 // The families with holes: exactly n vertices in all, r reflex vertices and h holes, through the
 // checked door (every ring simple, the holes inside and apart), the same bytes for the same arguments,
 // their feasible ranges as documented, and 2 * 10^6 vertices within 2^31.
