@@ -9,7 +9,7 @@ FUZZ_SECONDS ?= 600
 SANITIZE_CONFIG := -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Test -DPD_TESTS=ON -DPD_SANITIZE=ON -DPD_FUZZ=ON
 PY := /usr/bin/python3
 
-.PHONY: all deps build test sanitize-build fuzz corpus bench paper clean
+.PHONY: all deps build test sanitize-build fuzz corpus bench paper door clean
 
 all: build
 
@@ -56,6 +56,13 @@ bench: corpus
 
 paper: corpus
 	@$(PY) analysis/sweep.py --sweep paper --build $(BUILD) --results results
+
+# What a user waits for around an algorithm at 10^6 vertices (issue 34): reading, checking, each
+# O(n log n) triangulation, its validation and `polydecomp run`, per family (results/door.md).
+door: build
+	@$(BUILD)/polydecomp-door-bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+	  --benchmark_out=results/door.json --benchmark_out_format=json
+	@$(PY) analysis/door.py --json results/door.json --out results/door.md
 
 clean:
 	rm -rf $(BUILD) $(TEST_BUILD) $(SANITIZE_BUILD)

@@ -1,5 +1,7 @@
 #include "core/decomposition.h"
 
+#include "core/sort_rows.h"
+
 #include <algorithm>
 #include <map>
 #include <numeric>
@@ -109,25 +111,9 @@ struct Rotation {
   }
 };
 
-// The twin of every half-edge. Each vertex's row is sorted by target once, so finding v->u in v's row
-// is a binary search: O(m log d) in all, with d the largest degree (a fan does not make it quadratic).
-std::vector<std::size_t> twins(const std::vector<std::size_t>& start, const std::vector<VertexId>& target) {
-  std::vector<std::pair<VertexId, std::size_t>> by_target(target.size());
-  for (std::size_t h = 0; h < target.size(); ++h) by_target[h] = {target[h], h};
-  for (std::size_t v = 0; v + 1 < start.size(); ++v)
-    std::sort(by_target.begin() + static_cast<std::ptrdiff_t>(start[v]),
-              by_target.begin() + static_cast<std::ptrdiff_t>(start[v + 1]));
-  std::vector<std::size_t> twin(target.size());
-  for (std::size_t v = 0; v + 1 < start.size(); ++v)
-    for (std::size_t h = start[v]; h < start[v + 1]; ++h) {
-      const VertexId u = target[h];
-      const auto first = by_target.begin() + static_cast<std::ptrdiff_t>(start[u]);
-      const auto last = by_target.begin() + static_cast<std::ptrdiff_t>(start[u + 1]);
-      twin[h] = std::lower_bound(first, last, std::make_pair(static_cast<VertexId>(v), std::size_t(0)))->second;
-    }
-  return twin;
-}
-
+// Each vertex's half-edges sorted counter-clockwise. `edges` holds every edge as a pair of twins
+// (2k, 2k + 1), so a half-edge's twin is found through where its partner went: O(E) beyond the sorts
+// of the rows, without searching any row.
 template <class P>
 Rotation sorted_rotation(const std::vector<P>& pts, const std::vector<HalfEdge>& edges) {
   const std::size_t m = pts.size();
@@ -135,22 +121,30 @@ Rotation sorted_rotation(const std::vector<P>& pts, const std::vector<HalfEdge>&
   rot.start.assign(m + 1, 0);
   for (const HalfEdge& h : edges) ++rot.start[h.from + 1];
   std::partial_sum(rot.start.begin(), rot.start.end(), rot.start.begin());
+  std::vector<std::size_t> id(edges.size());  // the half-edge (index into edges) at each place
+  std::vector<std::size_t> fill(rot.start.begin(), rot.start.end() - 1);
+  for (std::size_t h = 0; h < edges.size(); ++h) id[fill[edges[h].from]++] = h;
   rot.origin.resize(edges.size());
   rot.target.resize(edges.size());
-  std::vector<std::size_t> fill(rot.start.begin(), rot.start.end() - 1);
-  for (const HalfEdge& h : edges) rot.target[fill[h.from]++] = h.to;
   for (std::size_t v = 0; v < m; ++v) {
-    const auto first = rot.target.begin() + rot.start[v], last = rot.target.begin() + rot.start[v + 1];
-    const AngularLess<P> less{pts, pts[v]};
+    const auto first = id.begin() + static_cast<std::ptrdiff_t>(rot.start[v]);
+    const auto last = id.begin() + static_cast<std::ptrdiff_t>(rot.start[v + 1]);
+    const AngularLess<P> angular{pts, pts[v]};
+    const auto less = [&](std::size_t a, std::size_t b) { return angular(edges[a].to, edges[b].to); };
     std::sort(first, last, less);
     for (auto it = first; it + 1 < last; ++it)
       if (!less(*it, *(it + 1)))
-        malformed("edges " + std::to_string(v) + "-" + std::to_string(*it) + " and " + std::to_string(v) +
-                  "-" + std::to_string(*(it + 1)) + " overlap");
-    std::fill(rot.origin.begin() + rot.start[v], rot.origin.begin() + rot.start[v + 1],
-              static_cast<VertexId>(v));
+        malformed("edges " + std::to_string(v) + "-" + std::to_string(edges[*it].to) + " and " + std::to_string(v) +
+                  "-" + std::to_string(edges[*(it + 1)].to) + " overlap");
+    for (std::size_t k = rot.start[v]; k < rot.start[v + 1]; ++k) {
+      rot.origin[k] = static_cast<VertexId>(v);
+      rot.target[k] = edges[id[k]].to;
+    }
   }
-  rot.twin = twins(rot.start, rot.target);
+  std::vector<std::size_t> place(edges.size());
+  for (std::size_t k = 0; k < id.size(); ++k) place[id[k]] = k;
+  rot.twin.resize(edges.size());
+  for (std::size_t k = 0; k < id.size(); ++k) rot.twin[k] = place[id[k] ^ 1];
   return rot;
 }
 
@@ -182,7 +176,7 @@ std::vector<HalfEdge> half_edges(const Decomposition& d, const Cycles& rings, st
   std::vector<std::pair<VertexId, VertexId>> seen;
   edges.reserve(2 * (m + d.cuts.size()));
   seen.reserve(m + d.cuts.size());
-  auto add = [&](VertexId a, VertexId b) {
+  auto add = [&](VertexId a, VertexId b) {  // twins side by side, as sorted_rotation needs them
     edges.push_back({a, b});
     edges.push_back({b, a});
   };
@@ -199,7 +193,7 @@ std::vector<HalfEdge> half_edges(const Decomposition& d, const Cycles& rings, st
     seen.push_back(std::minmax(cut.a, cut.b));
     add(cut.a, cut.b);
   }
-  std::sort(seen.begin(), seen.end());
+  sort_in_rows(seen, m, [](const std::pair<VertexId, VertexId>& s) { return s.first; });
   const auto dup = std::adjacent_find(seen.begin(), seen.end());
   if (dup != seen.end())
     malformed("segment " + std::to_string(dup->first) + "-" + std::to_string(dup->second) + " appears twice");

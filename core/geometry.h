@@ -9,6 +9,7 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <cmath>
 #include <string>
 
 namespace pd {
@@ -22,8 +23,19 @@ using QPoint = ExactKernel::Point_2;
 
 inline QPoint to_exact(const Point& p) { return QPoint(Rational(p.x()), Rational(p.y())); }
 
-// Sign of the turn p -> q -> r: +1 left (counter-clockwise), -1 right, 0 collinear. Exact.
+// Sign of the turn p -> q -> r: +1 left (counter-clockwise), -1 right, 0 collinear. Exact. For input
+// points, inline: the determinant in doubles decides when it exceeds (3 + 16 eps) eps times the sum of
+// its two products' magnitudes (Shewchuk 1997, orient2d's first stage, with eps = 2^-53); CGAL's exact
+// predicate decides the rest, and whenever a sum so small that products may have underflowed, an
+// overflow or a non-finite input leaves the comparison false.
 inline int orient(const Point& p, const Point& q, const Point& r) {
+  constexpr double kErrorBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+  constexpr double kSmallestSum = 0x1p-900;
+  const double left = (p.x() - r.x()) * (q.y() - r.y());
+  const double right = (p.y() - r.y()) * (q.x() - r.x());
+  const double det = left - right;
+  const double sum = std::fabs(left) + std::fabs(right);
+  if (sum >= kSmallestSum && std::fabs(det) > kErrorBound * sum) return det > 0 ? 1 : -1;
   return static_cast<int>(CGAL::orientation(p, q, r));
 }
 inline int orient(const QPoint& p, const QPoint& q, const QPoint& r) {

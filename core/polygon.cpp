@@ -1,14 +1,15 @@
 #include "core/polygon.h"
 
 #include "core/ring_layout.h"
-
-#include <CGAL/Polygon_2_algorithms.h>
+#include "core/sweep.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <numeric>
 #include <string>
+#include <utility>
 
 namespace pd {
 namespace {
@@ -29,54 +30,44 @@ bool folds_back(const P& a, const P& b, const P& c) {
   return orient(a, b, c) == 0 && !CGAL::collinear_are_ordered_along_line(a, b, c);
 }
 
+// The cycle's vertex indices in lexicographic order of their points (equal points by index).
 template <class P>
-std::string duplicate_vertices(const std::vector<P>& cycle, const NameOf& name) {
-  std::vector<std::size_t> order(cycle.size());
+std::vector<std::uint32_t> lexicographic_order(const std::vector<P>& cycle) {
+  std::vector<std::uint32_t> order(cycle.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+  std::sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) {
     return cycle[i] < cycle[j] || (cycle[i] == cycle[j] && i < j);
   });
+  return order;
+}
+
+template <class P>
+std::string duplicate_vertices(const std::vector<P>& cycle, const std::vector<std::uint32_t>& order, const NameOf& name) {
   for (std::size_t k = 1; k < order.size(); ++k)
     if (cycle[order[k - 1]] == cycle[order[k]])
       return "vertices " + name(order[k - 1]) + " and " + name(order[k]) + " coincide";
   return {};
 }
 
-// Names a pair of edges that meet where they should not. Called only once the cycle is known not to
-// be simple; edges are swept by their smallest x so that most pairs are never compared.
 template <class P>
-std::string crossing_witness(const std::vector<P>& cycle, const NameOf& name) {
+std::string fold_back_fault(const std::vector<P>& cycle, const NameOf& name) {
   const std::size_t n = cycle.size();
   for (std::size_t i = 0; i < n; ++i)
     if (folds_back(cycle[i], cycle[(i + 1) % n], cycle[(i + 2) % n]))
       return "edges " + edge_name(i, n, name) + " and " + edge_name((i + 1) % n, n, name) + " overlap";
-  auto lo = [&](std::size_t e) { return std::min(cycle[e].x(), cycle[(e + 1) % n].x()); };
-  auto hi = [&](std::size_t e) { return std::max(cycle[e].x(), cycle[(e + 1) % n].x()); };
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lo(a) < lo(b); });
-  std::vector<std::size_t> active;
-  for (std::size_t e : order) {
-    active.erase(std::remove_if(active.begin(), active.end(), [&](std::size_t f) { return hi(f) < lo(e); }),
-                 active.end());
-    for (std::size_t f : active) {
-      const bool adjacent = (e + 1) % n == f || (f + 1) % n == e;
-      if (adjacent) continue;
-      if (closed_segments_meet(cycle[e], cycle[(e + 1) % n], cycle[f], cycle[(f + 1) % n])) {
-        const auto [a, b] = std::minmax(e, f);
-        return "edge " + edge_name(a, n, name) + " crosses edge " + edge_name(b, n, name);
-      }
-    }
-    active.push_back(e);
-  }
-  return "edges meet";
+  return {};
 }
 
-template <class P, class K>
+// Distinct vertices, no fold-back, then the sweep of core/sweep.h, which names two edges that meet.
+template <class P>
 std::string simplicity_fault(const std::vector<P>& cycle, const NameOf& name) {
-  if (std::string dup = duplicate_vertices(cycle, name); !dup.empty()) return dup;
-  if (CGAL::is_simple_2(cycle.begin(), cycle.end(), K())) return {};
-  return crossing_witness(cycle, name);
+  const std::vector<std::uint32_t> order = lexicographic_order(cycle);
+  if (std::string dup = duplicate_vertices(cycle, order, name); !dup.empty()) return dup;
+  if (std::string fold = fold_back_fault(cycle, name); !fold.empty()) return fold;
+  const auto meeting = CycleSweep<P>(cycle, order).meeting();
+  if (!meeting) return {};
+  const std::size_t n = cycle.size();
+  return "edge " + edge_name(meeting->first, n, name) + " crosses edge " + edge_name(meeting->second, n, name);
 }
 
 std::size_t lowest_vertex(const std::vector<Point>& v) {
@@ -126,7 +117,7 @@ CleanRing clean_ring(Ring ring, std::size_t k, std::size_t rings) {
                                   : ring_name(k, rings) + " has " + count + after + "; a ring needs at least 3");
   }
   const NameOf name = [&](std::size_t i) { return std::to_string(c.file[i]); };
-  if (std::string why = simplicity_fault<Point, Kernel>(c.kept, name); !why.empty())
+  if (std::string why = simplicity_fault(c.kept, name); !why.empty())
     throw PolygonError(rings == 1 ? "not simple: " + why : ring_name(k, rings) + " is not simple: " + why);
   return c;
 }
@@ -153,18 +144,18 @@ Rational twice_signed_area(const std::vector<Point>& cycle) {
   return sum;
 }
 
-template <class P, class K>
+template <class P>
 bool simple_cycle(const std::vector<P>& cycle, std::string* why) {
-  std::string fault = simplicity_fault<P, K>(cycle, identity_name);
+  std::string fault = simplicity_fault(cycle, identity_name);
   if (why) *why = fault;
   return fault.empty();
 }
 
 bool is_simple_cycle(const std::vector<Point>& cycle, std::string* why) {
-  return simple_cycle<Point, Kernel>(cycle, why);
+  return simple_cycle(cycle, why);
 }
 bool is_simple_cycle(const std::vector<QPoint>& cycle, std::string* why) {
-  return simple_cycle<QPoint, ExactKernel>(cycle, why);
+  return simple_cycle(cycle, why);
 }
 
 std::size_t Polygon::reflex_count() const {

@@ -8,7 +8,9 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -40,6 +42,18 @@ double coordinate(std::string_view text, const Where& where) {
 std::string in_wkt() { return "WKT: "; }
 std::string in_geojson() { return "GeoJSON: "; }
 
+// A polygon of one part, or of one ring, moved into place (a braced list would copy every vertex).
+std::vector<Rings> one_part(Rings rings) {
+  std::vector<Rings> parts;
+  parts.push_back(std::move(rings));
+  return parts;
+}
+Rings one_ring(Ring ring) {
+  Rings rings;
+  rings.push_back(std::move(ring));
+  return rings;
+}
+
 // A file must hold a polygon: at least one part, each with its outer ring.
 std::vector<Rings> not_empty(std::vector<Rings> parts) {
   if (parts.empty()) bad("the polygon is empty");
@@ -57,8 +71,10 @@ bool starts_with_word(std::string_view text, std::string_view word) {
 
 // ---- plain text: `x y` per line, '#' comments, an optional count line before the first vertex.
 
-std::vector<std::string_view> fields_of(std::string_view line) {
-  std::vector<std::string_view> fields;
+// The fields of a line into `fields` (reused from line to line, so that a million lines make no
+// million vectors).
+void split_fields(std::string_view line, std::vector<std::string_view>& fields) {
+  fields.clear();
   std::size_t start = 0;
   for (std::size_t i = 0; i <= line.size(); ++i) {
     if (i == line.size() || line[i] == ' ' || line[i] == '\t' || line[i] == ',' || line[i] == '\r') {
@@ -66,7 +82,46 @@ std::vector<std::string_view> fields_of(std::string_view line) {
       start = i + 1;
     }
   }
-  return fields;
+}
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == ',' || c == '\r'; }
+
+// A plain number at `at`, [-]D+ of at most 15 digits or [-]D*.D* of at most 300 characters: the
+// coordinate rule gives it exactly from_chars' value, since it can neither overflow, underflow nor be
+// an integer that no double holds. Returns it and moves `at` past it; returns nothing for anything
+// else, which the full rule reads. The caller checks what follows it.
+std::optional<double> plain_number(const char*& at, const char* end) {
+  double d;
+  const char* start = at;
+  const auto [stop, error] = std::from_chars(start, end, d);
+  if (error != std::errc()) return std::nullopt;
+  bool point = false;
+  for (const char* c = start; c < stop; ++c) {
+    if (*c == '.') point = true;
+    else if (!is_digit(*c) && *c != '-') return std::nullopt;
+  }
+  if (stop - start > (point ? 300 : 15)) return std::nullopt;
+  at = stop;
+  return d;
+}
+
+// A line at `at` that is exactly `x y` in plain numbers, read in one pass: the vertex, with `at` moved
+// past the line's end; nothing for any other line (a comment, a count, an error, a number in another
+// form), which the full reading takes.
+std::optional<Point> plain_vertex(const char*& at, const char* end) {
+  const char* p = at;
+  double xy[2];
+  for (double& v : xy) {
+    while (p < end && is_blank(*p)) ++p;
+    const std::optional<double> d = plain_number(p, end);
+    if (!d || (p < end && !is_blank(*p) && *p != '\n')) return std::nullopt;
+    v = *d;
+  }
+  while (p < end && is_blank(*p)) ++p;
+  if (p < end && *p != '\n') return std::nullopt;
+  at = p < end ? p + 1 : p;
+  return Point(xy[0], xy[1]);
 }
 
 // The count line may count the repeated closing vertex or not.
@@ -78,15 +133,23 @@ void check_count(std::size_t count, const Ring& ring) {
 
 Ring parse_txt(std::string_view content) {
   Ring ring;
+  ring.reserve(static_cast<std::size_t>(std::count(content.begin(), content.end(), '\n')) + 1);
   std::optional<std::size_t> count;
+  std::vector<std::string_view> fields;
   std::size_t line_no = 0;
   while (!content.empty()) {
     ++line_no;
+    const char* at = content.data();
+    if (const std::optional<Point> vertex = plain_vertex(at, content.data() + content.size())) {
+      ring.push_back(*vertex);
+      content.remove_prefix(static_cast<std::size_t>(at - content.data()));
+      continue;
+    }
     const std::size_t end = std::min(content.find('\n'), content.size());
     std::string_view line = content.substr(0, end);
     content.remove_prefix(std::min(end + 1, content.size()));
     line = line.substr(0, std::min(line.find('#'), line.size()));
-    const auto fields = fields_of(line);
+    split_fields(line, fields);
     if (fields.empty()) continue;
     const auto where = [line_no] { return "line " + std::to_string(line_no) + ": "; };
     if (fields.size() == 1 && ring.empty() && !count) {
@@ -177,12 +240,18 @@ class WktReader {
   }
   double number() {
     skip_space();
+    const char* end = text_.data() + text_.size();
+    const char* at = text_.data() + at_;
+    if (const std::optional<double> d = plain_number(at, end); d && (at == end || ends_number(*at))) {
+      at_ = static_cast<std::size_t>(at - text_.data());
+      return *d;
+    }
     const std::size_t start = at_;
-    while (at_ < text_.size() && !is_space(text_[at_]) && text_[at_] != ',' && text_[at_] != '(' && text_[at_] != ')')
-      ++at_;
+    while (at_ < text_.size() && !ends_number(text_[at_])) ++at_;
     if (at_ == start) fail("expected a coordinate");
     return coordinate(text_.substr(start, at_ - start), in_wkt);
   }
+  static bool ends_number(char c) { return is_space(c) || c == ',' || c == '(' || c == ')'; }
   std::string word() {
     skip_space();
     const std::size_t start = at_;
@@ -273,7 +342,7 @@ const Json& member(const Json& doc, const char* name, const std::string& type) {
 std::vector<Rings> geometry_parts(const Json& geometry) {
   const std::string& type = type_of(geometry);
   const Json& coordinates = member(geometry, "coordinates", type);
-  if (type == "Polygon") return {rings_of(coordinates)};
+  if (type == "Polygon") return one_part(rings_of(coordinates));
   if (type == "MultiPolygon") {
     if (!coordinates.is_array() || coordinates.is_packed()) bad("GeoJSON: a MultiPolygon's coordinates must be an array of polygons");
     std::vector<Rings> parts;
@@ -293,11 +362,11 @@ std::vector<Rings> feature_parts(const Json& feature) {
 
 std::vector<Rings> geojson_parts(const Json& doc) {
   if (doc.is_array()) {  // earcut's fixtures: an array of rings, or one ring
-    if (doc.is_packed()) return {{ring_of(doc)}};
+    if (doc.is_packed()) return one_part(one_ring(ring_of(doc)));
     if (!doc.items.empty() && doc.items[0].is_array() && (doc.items[0].is_packed() || doc.items[0].items.empty() ||
                                                          doc.items[0].items[0].is_array()))
-      return {rings_of(doc)};
-    return {{ring_of(doc)}};
+      return one_part(rings_of(doc));
+    return one_part(one_ring(ring_of(doc)));
   }
   const std::string& type = type_of(doc);
   if (type == "Feature") return feature_parts(doc);
@@ -346,7 +415,7 @@ std::vector<Rings> parse_parts(const std::string& input) {
   }
   if (starts_with_word(start, "polygon") || starts_with_word(start, "multipolygon") || starts_with_word(start, "srid="))
     return not_empty(WktReader(start).read());
-  return {{parse_txt(content)}};
+  return one_part(one_ring(parse_txt(content)));
 }
 
 std::vector<Rings> read_parts_file(const std::string& path) {

@@ -1,11 +1,10 @@
-// The layout sweep of core/ring_layout.h. The edges are swept left to right (lexicographically, so a
-// vertical edge runs upwards); the active edges are ordered bottom to top, and any two that become
-// neighbours are tested for a common point (Shamos and Hoey 1976). Two rings that meet always give such
-// a pair before or at their leftmost common point. Edges of one ring are not tested: each ring is
-// simple. The nesting of the rings is read at each ring's leftmost vertex from the active edge just
-// below it: the polygon's interior lies to the left of every edge, so the region just above that edge
-// is inside a part exactly when the edge runs rightwards.
+// The layout sweep of core/ring_layout.h, the sweep of core/sweep.h over the edges of every ring.
+// Edges of one ring are not tested: each ring is simple. The nesting of the rings is read at each
+// ring's leftmost vertex from the active edge just below it: the polygon's interior lies to the left
+// of every edge, so the region just above that edge is inside a part exactly when the edge runs
+// rightwards.
 #include "core/ring_layout.h"
+#include "core/sweep.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -33,10 +32,7 @@ struct Below {
   bool operator()(std::uint32_t a, std::uint32_t b) const {
     if (a == b) return false;
     const Edge &e = (*edges)[a], &f = (*edges)[b];
-    int side;  // where f lies relative to e
-    if (e.lo == f.lo) side = orient(e.lo, e.hi, f.hi);
-    else if (e.lo < f.lo) side = orient(e.lo, e.hi, f.lo);
-    else side = -orient(f.lo, f.hi, e.lo);
+    const int side = side_in_sweep(e.lo, e.hi, f.lo, f.hi);
     if (side == 0) throw Meet{a, b};
     return side > 0;
   }

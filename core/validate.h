@@ -28,6 +28,10 @@ struct Validation {
 // in counter-clockwise order) against the polygon. `allow_steiner`: whether points beyond n may be used.
 Validation validate_pieces(const Polygon& p, const std::vector<QPoint>& points,
                            const std::vector<Piece>& pieces, Kind kind, bool allow_steiner);
+// The same for the pieces of decomposition d (pieces_of(p, d)): without Steiner points the polygon's
+// own vertices are checked, with no exact copy of them.
+Validation validate_pieces(const Polygon& p, const Decomposition& d, const std::vector<Piece>& pieces, Kind kind,
+                           bool allow_steiner);
 
 // Turns d into pieces with the shared routine and validates them; a malformed cut graph is reported
 // as invalid with its reason.

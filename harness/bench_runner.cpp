@@ -200,7 +200,7 @@ void SweepRunner::check(const Polygon& p, const Decomposition& d, const Algorith
     return;
   }
   current_.pieces = pieces.size();
-  const Validation v = validate_pieces(p, exact_points(p, d), pieces, a.kind, a.steiner);
+  const Validation v = validate_pieces(p, d, pieces, a.kind, a.steiner);
   current_.valid = v.ok;
   current_.reason = v.reason;
 }

@@ -309,7 +309,7 @@ PartCheck check_part(const Algorithm& algo, const Polygon& polygon, const Decomp
     c.reason = e.what();
   }
   if (validate_result && !c.valid) {
-    const Validation v = validate_pieces(polygon, exact_points(polygon, d), c.pieces, algo.kind, algo.steiner);
+    const Validation v = validate_pieces(polygon, d, c.pieces, algo.kind, algo.steiner);
     c.valid = v.ok;
     c.reason = v.reason;
   }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <random>
 
 namespace pd {
 namespace {
@@ -42,6 +43,48 @@ TEST(Polygon, RejectsRepeatedVerticesAndFoldsAndDegenerateRings) {
   EXPECT_NE(error_of({{0, 0}, {1, 0}, {2, 0}}), "accepted");
   // A vertex touching another edge.
   EXPECT_NE(error_of({{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}}), "accepted");
+}
+
+// The quadratic definition: distinct vertices, edges that share a vertex meet only there, other
+// edges not at all.
+bool simple_by_brute_force(const std::vector<Point>& v) {
+  const std::size_t n = v.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (v[i] == v[j]) return false;
+      const Point &a = v[i], &b = v[(i + 1) % n], &c = v[j], &d = v[(j + 1) % n];
+      if (j == i + 1) {
+        if (on_closed_segment(a, b, d) || on_closed_segment(c, d, a)) return false;
+      } else if (i == 0 && j == n - 1) {
+        if (on_closed_segment(a, b, c) || on_closed_segment(c, d, b)) return false;
+      } else if (closed_segments_meet(a, b, c, d)) {
+        return false;
+      }
+    }
+  return true;
+}
+
+std::vector<QPoint> exact(const std::vector<Point>& v) {
+  std::vector<QPoint> out;
+  for (const Point& p : v) out.push_back(to_exact(p));
+  return out;
+}
+
+// The sweep (core/sweep.h) on random cycles of a small lattice, where collinear edges, vertices on
+// edges and coincident vertices are everywhere, for input and exact points alike.
+TEST(Polygon, SimplicitySweepAgreesWithTheBruteForce) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> coordinate(0, 4), size(3, 9);
+  std::size_t simple = 0;
+  for (int trial = 0; trial < 40000; ++trial) {
+    std::vector<Point> v(static_cast<std::size_t>(size(rng)));
+    for (Point& p : v) p = Point(coordinate(rng), coordinate(rng));
+    const bool expected = simple_by_brute_force(v);
+    simple += expected;
+    ASSERT_EQ(is_simple_cycle(v, nullptr), expected) << "trial " << trial;
+    ASSERT_EQ(is_simple_cycle(exact(v), nullptr), expected) << "trial " << trial;
+  }
+  EXPECT_GT(simple, 2000u);
 }
 
 TEST(Polygon, DropsTheClosingVertex) {

@@ -8,7 +8,7 @@ import unittest
 from . import synthetic
 
 ANALYSIS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SCRIPTS = ("bounds.py", "integration_sweep.py", "merge.py", "plots.py", "rejournal.py", "sweep.py")
+SCRIPTS = ("bounds.py", "door.py", "integration_sweep.py", "merge.py", "plots.py", "rejournal.py", "sweep.py")
 
 
 def run_script(name, *args):
@@ -54,6 +54,12 @@ class ScriptsTest(unittest.TestCase):
         self.assertEqual(done.returncode, 1)
         self.assertTrue(done.stderr.startswith("error: the registry "), done.stderr)
         self.assertFalse(os.path.exists(self.path("bounds.md")))
+
+    def test_door_refuses_a_missing_file(self):
+        done = run_script("door.py", "--json", self.path("none.json"), "--out", self.path("door.md"))
+        self.assertEqual(done.returncode, 1)
+        self.assertTrue(done.stderr.startswith("error: " + self.path("none.json")), done.stderr)
+        self.assertFalse(os.path.exists(self.path("door.md")))
 
     def test_merge_refuses_a_missing_shard(self):
         with open(self.path("s.shard-1-of-2.journal.jsonl"), "w", encoding="utf-8"):

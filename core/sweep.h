@@ -1,0 +1,105 @@
+// The Shamos-Hoey sweep (Shamos and Hoey 1976) behind the simplicity check of a ring (core/polygon.cpp)
+// and the layout of rings (core/ring_layout.cpp). Segments are swept left to right in lexicographic
+// order of their end points (so a vertical segment runs upwards); the segments the sweep line crosses
+// are kept ordered bottom to top, and any two that become neighbours are tested for a common point.
+// If some two segments meet, a pair of neighbours meets at or before the leftmost meeting point.
+// Every predicate is exact (orient, filtered for input points): nothing is decided by an epsilon.
+#pragma once
+
+#include "core/geometry.h"
+
+#include <cstdint>
+#include <algorithm>
+#include <iterator>
+#include <optional>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace pd {
+
+// Where segment f = (flo, fhi) lies against segment e = (elo, ehi), lo < hi, both on the sweep line
+// where the later of them starts: +1 above, -1 below, 0 when the order cannot separate them there
+// (then they meet).
+template <class P>
+int side_in_sweep(const P& elo, const P& ehi, const P& flo, const P& fhi) {
+  if (elo == flo) return orient(elo, ehi, fhi);
+  if (elo < flo) return orient(elo, ehi, flo);
+  return -orient(flo, fhi, elo);
+}
+
+// Whether a closed cycle is simple, and if not two edges that meet, given its vertex indices in
+// lexicographic order of their points, which must be pairwise distinct, and no edge folding back onto
+// the one before it. O(n log n) time, O(n) space; the sweep structure holds only the edges the sweep
+// line crosses.
+template <class P>
+class CycleSweep {
+ public:
+  CycleSweep(const std::vector<P>& cycle, const std::vector<std::uint32_t>& order)
+      : cycle_(cycle), order_(order), forward_(cycle.size()), active_(Below{this}), where_(cycle.size()) {
+    for (std::size_t e = 0; e < cycle.size(); ++e) forward_[e] = cycle[e] < cycle[next(e)];
+  }
+
+  // Two edges (by their first vertex, the smaller first) that meet, or nothing when the cycle is simple.
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> meeting() {
+    try {
+      for (const std::uint32_t v : order_) visit(v);
+    } catch (const Meeting& m) {
+      return std::minmax(m.a, m.b);
+    }
+    return std::nullopt;
+  }
+
+ private:
+  struct Meeting {
+    std::uint32_t a, b;
+  };
+  struct Below {
+    const CycleSweep* sweep;
+    bool operator()(std::uint32_t a, std::uint32_t b) const {
+      if (a == b) return false;
+      const int side = side_in_sweep(sweep->lo(a), sweep->hi(a), sweep->lo(b), sweep->hi(b));
+      if (side == 0) throw Meeting{a, b};
+      return side > 0;
+    }
+  };
+  using Active = std::set<std::uint32_t, Below>;
+
+  std::size_t next(std::size_t e) const { return e + 1 == cycle_.size() ? 0 : e + 1; }
+  const P& lo(std::uint32_t e) const { return forward_[e] ? cycle_[e] : cycle_[next(e)]; }
+  const P& hi(std::uint32_t e) const { return forward_[e] ? cycle_[next(e)] : cycle_[e]; }
+
+  // At vertex v its edge that ends here leaves the order before the one that starts here joins it.
+  void visit(std::uint32_t v) {
+    const std::uint32_t edges[2] = {v == 0 ? static_cast<std::uint32_t>(cycle_.size() - 1) : v - 1, v};
+    for (const std::uint32_t e : edges)
+      if (&hi(e) == &cycle_[v]) remove(e);
+    for (const std::uint32_t e : edges)
+      if (&lo(e) == &cycle_[v]) insert(e);
+  }
+  void insert(std::uint32_t e) {
+    const auto it = active_.insert(e).first;
+    where_[e] = it;
+    if (it != active_.begin()) test(*std::prev(it), e);
+    if (std::next(it) != active_.end()) test(e, *std::next(it));
+  }
+  void remove(std::uint32_t e) {
+    const auto it = where_[e];
+    const auto above = std::next(it);
+    if (it != active_.begin() && above != active_.end()) test(*std::prev(it), *above);
+    active_.erase(it);
+  }
+  // Edges that share a vertex meet only there (no fold-backs, distinct points); others must not meet.
+  void test(std::uint32_t a, std::uint32_t b) const {
+    if (next(a) == b || next(b) == a) return;
+    if (closed_segments_meet(lo(a), hi(a), lo(b), hi(b))) throw Meeting{a, b};
+  }
+
+  const std::vector<P>& cycle_;
+  const std::vector<std::uint32_t>& order_;
+  std::vector<bool> forward_;  // cycle[e] < cycle[next(e)]
+  Active active_;
+  std::vector<typename Active::iterator> where_;
+};
+
+}  // namespace pd
