@@ -50,10 +50,15 @@ bool on_closed_segment(const P& a, const P& b, const P& p) {
 }
 template <class P>
 bool closed_segments_meet(const P& a, const P& b, const P& c, const P& d) {
-  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d);
+  if (o1 * o2 > 0) return false;  // c and d strictly on one side of ab: the common case, decided here
+  const int o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (o3 * o4 > 0) return false;
   if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return on_closed_segment(a, b, c) || on_closed_segment(a, b, d) || on_closed_segment(c, d, a) ||
-         on_closed_segment(c, d, b);
+  return (o1 == 0 && CGAL::collinear_are_ordered_along_line(a, c, b)) ||
+         (o2 == 0 && CGAL::collinear_are_ordered_along_line(a, d, b)) ||
+         (o3 == 0 && CGAL::collinear_are_ordered_along_line(c, a, d)) ||
+         (o4 == 0 && CGAL::collinear_are_ordered_along_line(c, b, d));
 }
 
 // Exact decimal or "p/q" text of a rational; a double-representable value prints as a JSON number

@@ -35,9 +35,9 @@ template <class P>
 std::vector<std::uint32_t> lexicographic_order(const std::vector<P>& cycle) {
   std::vector<std::uint32_t> order(cycle.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) {
-    return cycle[i] < cycle[j] || (cycle[i] == cycle[j] && i < j);
-  });
+  // A merge sort: introsort's pivots meet the organ-pipe x order of a monotone polygon's vertices and
+  // fall back to heapsort, twice as slow at 10^6.
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) { return cycle[i] < cycle[j]; });
   return order;
 }
 

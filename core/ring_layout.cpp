@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
-#include <set>
 
 namespace pd {
 namespace {
@@ -38,9 +37,16 @@ struct Below {
   }
 };
 
+std::size_t vertex_count(const std::vector<const Polygon*>& parts) {
+  std::size_t n = 0;
+  for (const Polygon* p : parts) n += p->size();
+  return n;
+}
+
 class LayoutSweep {
  public:
-  explicit LayoutSweep(const std::vector<const Polygon*>& parts) : parts_(parts), active_(Below{&edges_}) {
+  explicit LayoutSweep(const std::vector<const Polygon*>& parts)
+      : parts_(parts), active_(vertex_count(parts), Below{&edges_}, Test{this}) {
     for (std::uint32_t q = 0; q < parts.size(); ++q) {
       offset_.push_back(static_cast<std::uint32_t>(edges_.size()));
       const Polygon& p = *parts[q];
@@ -55,7 +61,6 @@ class LayoutSweep {
       }
     }
     std::sort(leftmost_.begin(), leftmost_.end());
-    where_.resize(edges_.size(), active_.end());
     outer_started_.assign(parts.size(), false);
   }
 
@@ -88,26 +93,10 @@ class LayoutSweep {
     const Point& p = point(v);
     const std::uint32_t ends[2] = {in_edge(v), v};
     for (const std::uint32_t e : ends)
-      if (edges_[e].hi == p) remove(e);
+      if (edges_[e].hi == p) active_.remove(e);
     for (const std::uint32_t e : ends)
-      if (edges_[e].lo == p) insert(e);
+      if (edges_[e].lo == p) active_.insert(e);
     if (std::binary_search(leftmost_.begin(), leftmost_.end(), v)) check_nesting(v, ends[0], ends[1]);
-  }
-
-  void insert(std::uint32_t e) {
-    const auto it = active_.insert(e).first;
-    where_[e] = it;
-    if (it != active_.begin()) test(*std::prev(it), e);
-    if (std::next(it) != active_.end()) test(e, *std::next(it));
-  }
-
-  void remove(std::uint32_t e) {
-    const auto it = where_[e];
-    const auto above = std::next(it);
-    const bool has_below = it != active_.begin();
-    const auto below = has_below ? std::prev(it) : it;
-    active_.erase(it);
-    if (has_below && above != active_.end()) test(*below, *above);
   }
 
   void test(std::uint32_t a, std::uint32_t b) const {
@@ -120,9 +109,9 @@ class LayoutSweep {
   void check_nesting(std::uint32_t v, std::uint32_t in, std::uint32_t out) {
     const Edge& me = edges_[v];
     const std::uint32_t lower = Below{&edges_}(in, out) ? in : out;
-    const auto it = where_[lower];
-    const bool any_below = it != active_.begin();
-    const Edge& e = edges_[any_below ? *std::prev(it) : lower];  // meaningful only when any_below
+    const std::optional<std::uint32_t> below = active_.below(lower);
+    const bool any_below = below.has_value();
+    const Edge& e = edges_[below.value_or(lower)];  // meaningful only when any_below
     if (me.ring == 0) {
       outer_started_[me.part] = true;
       if (any_below && e.rightwards)
@@ -176,8 +165,11 @@ class LayoutSweep {
   std::vector<Edge> edges_;  // edge offset_[q] + i runs from vertex i of part q to its next
   std::vector<std::uint32_t> offset_;
   std::vector<std::uint32_t> leftmost_;  // each ring's leftmost (lowest-leftmost) vertex, sorted
-  std::set<std::uint32_t, Below> active_;
-  std::vector<std::set<std::uint32_t, Below>::iterator> where_;
+  struct Test {
+    const LayoutSweep* sweep;
+    void operator()(std::uint32_t a, std::uint32_t b) const { sweep->test(a, b); }
+  };
+  SweepStatus<Below, Test> active_;
   std::vector<bool> outer_started_;
   std::string nesting_fault_;
 };

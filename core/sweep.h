@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <algorithm>
 #include <iterator>
+#include <memory_resource>
 #include <optional>
 #include <set>
 #include <utility>
@@ -28,6 +29,42 @@ int side_in_sweep(const P& elo, const P& ehi, const P& flo, const P& fhi) {
   return -orient(flo, fhi, elo);
 }
 
+// The edges the sweep line crosses, bottom to top by `Below` (which may throw to stop the sweep), with
+// each edge's place. Inserting or removing an edge calls test(below, above) on each pair of edges
+// that become neighbours (which may throw too). The nodes come from a pool: an insertion and a removal
+// at every vertex would otherwise be a malloc and a free each.
+template <class Below, class Test>
+class SweepStatus {
+ public:
+  SweepStatus(std::size_t edges, Below below, Test test) : active_(below, &pool_), where_(edges), test_(test) {}
+
+  void insert(std::uint32_t e) {
+    const auto it = active_.insert(e).first;
+    where_[e] = it;
+    if (it != active_.begin()) test_(*std::prev(it), e);
+    if (std::next(it) != active_.end()) test_(e, *std::next(it));
+  }
+  void remove(std::uint32_t e) {
+    const auto it = where_[e];
+    const auto above = std::next(it);
+    if (it != active_.begin() && above != active_.end()) test_(*std::prev(it), *above);
+    active_.erase(it);
+  }
+  // The edge just below e, which is in the order, if there is one.
+  std::optional<std::uint32_t> below(std::uint32_t e) const {
+    const auto it = where_[e];
+    if (it == active_.begin()) return std::nullopt;
+    return *std::prev(it);
+  }
+
+ private:
+  using Active = std::pmr::set<std::uint32_t, Below>;
+  std::pmr::unsynchronized_pool_resource pool_;
+  Active active_;
+  std::vector<typename Active::iterator> where_;
+  Test test_;
+};
+
 // Whether a closed cycle is simple, and if not two edges that meet, given its vertex indices in
 // lexicographic order of their points, which must be pairwise distinct, and no edge folding back onto
 // the one before it. O(n log n) time, O(n) space; the sweep structure holds only the edges the sweep
@@ -36,7 +73,7 @@ template <class P>
 class CycleSweep {
  public:
   CycleSweep(const std::vector<P>& cycle, const std::vector<std::uint32_t>& order)
-      : cycle_(cycle), order_(order), forward_(cycle.size()), active_(Below{this}), where_(cycle.size()) {
+      : cycle_(cycle), order_(order), forward_(cycle.size()), active_(cycle.size(), Below{this}, Test{this}) {
     for (std::size_t e = 0; e < cycle.size(); ++e) forward_[e] = cycle[e] < cycle[next(e)];
   }
 
@@ -63,7 +100,10 @@ class CycleSweep {
       return side > 0;
     }
   };
-  using Active = std::set<std::uint32_t, Below>;
+  struct Test {
+    const CycleSweep* sweep;
+    void operator()(std::uint32_t a, std::uint32_t b) const { sweep->test(a, b); }
+  };
 
   std::size_t next(std::size_t e) const { return e + 1 == cycle_.size() ? 0 : e + 1; }
   const P& lo(std::uint32_t e) const { return forward_[e] ? cycle_[e] : cycle_[next(e)]; }
@@ -73,21 +113,9 @@ class CycleSweep {
   void visit(std::uint32_t v) {
     const std::uint32_t edges[2] = {v == 0 ? static_cast<std::uint32_t>(cycle_.size() - 1) : v - 1, v};
     for (const std::uint32_t e : edges)
-      if (&hi(e) == &cycle_[v]) remove(e);
+      if (&hi(e) == &cycle_[v]) active_.remove(e);
     for (const std::uint32_t e : edges)
-      if (&lo(e) == &cycle_[v]) insert(e);
-  }
-  void insert(std::uint32_t e) {
-    const auto it = active_.insert(e).first;
-    where_[e] = it;
-    if (it != active_.begin()) test(*std::prev(it), e);
-    if (std::next(it) != active_.end()) test(e, *std::next(it));
-  }
-  void remove(std::uint32_t e) {
-    const auto it = where_[e];
-    const auto above = std::next(it);
-    if (it != active_.begin() && above != active_.end()) test(*std::prev(it), *above);
-    active_.erase(it);
+      if (&lo(e) == &cycle_[v]) active_.insert(e);
   }
   // Edges that share a vertex meet only there (no fold-backs, distinct points); others must not meet.
   void test(std::uint32_t a, std::uint32_t b) const {
@@ -98,8 +126,7 @@ class CycleSweep {
   const std::vector<P>& cycle_;
   const std::vector<std::uint32_t>& order_;
   std::vector<bool> forward_;  // cycle[e] < cycle[next(e)]
-  Active active_;
-  std::vector<typename Active::iterator> where_;
+  SweepStatus<Below, Test> active_;
 };
 
 }  // namespace pd

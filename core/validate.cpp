@@ -181,6 +181,9 @@ constexpr VertexId kNoSuccessor = ~VertexId(0);
 std::string unmatched_edges(const std::vector<Piece>& pieces, std::vector<VertexId>& successor,
                             std::size_t& count) {
   std::vector<std::pair<std::uint64_t, int>> uses;  // key (lo, hi), +1 for lo->hi, -1 for hi->lo
+  std::size_t edges = 0;
+  for (const Piece& piece : pieces) edges += piece.size();
+  uses.reserve(edges);
   for (const Piece& piece : pieces)
     for (std::size_t i = 0; i < piece.size(); ++i) {
       const VertexId a = piece[i], b = piece[(i + 1) % piece.size()];

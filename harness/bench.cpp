@@ -210,13 +210,4 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace pd
 
-int main(int argc, char** argv) {
-  return pd::run_on_large_stack([&] {
-    try {
-      return pd::run(argc, argv);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "error: %s\n", e.what());
-      return 2;
-    }
-  });
-}
+int main(int argc, char** argv) { return pd::benchmark_main(argc, argv, pd::run); }

@@ -1,12 +1,13 @@
 // polydecomp-door-bench: what a user waits for around an algorithm, each part on its own (issue 34).
 //
-// For every family at n = 10^6 (or its largest n), with Google Benchmark (CPU time of the part alone,
-// median of 3 repetitions): the floor (a from_chars scan of the text file's bytes into doubles), the
-// text, WKT and GeoJSON readers on the same polygon, the checked constructor (simplicity, orientation,
-// layout of the rings), every O(n log n) triangulation, its exact validation, and `polydecomp run
-// --algorithm monotone` end to end as a process (wall time). Each part reports `peak_bytes`, the most
-// memory it held beyond what it was given (counted by this program's operator new). analysis/door.py
-// turns the JSON into results/door.md (`make door`).
+// For every family at n = 10^6 (or its largest n), with Google Benchmark (CPU time of the part alone;
+// `make door` takes the median of 3 repetitions and reports their minimum too): the floor (a
+// from_chars scan of the text file's bytes into doubles), the text, WKT and GeoJSON readers on the
+// same polygon, the checked constructor (simplicity, orientation, layout of the rings), every
+// O(n log n) triangulation, its exact validation, and `polydecomp run --algorithm monotone` end to end
+// as a process (wall time). Each part reports `peak_bytes`, the most memory it held beyond what it was
+// given (counted by this program's operator new). analysis/door.py turns the JSON into
+// results/door.md.
 #include "core/io.h"
 #include "core/polygon.h"
 #include "core/registry.h"
@@ -103,6 +104,14 @@ std::vector<double> scan_numbers(const std::string& text) {
   return numbers;
 }
 
+// Registers a part; its repetitions also report their minimum, the figure least disturbed by the
+// machine.
+template <class Body>
+benchmark::internal::Benchmark* add(const std::string& name, Body body) {
+  return benchmark::RegisterBenchmark(name.c_str(), body)->ComputeStatistics(
+      "min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
+}
+
 void report(benchmark::State& state, const PeakMemory& memory, std::size_t n) {
   state.counters["peak_bytes"] = memory.extra();
   state.counters["n"] = static_cast<double>(n);
@@ -117,7 +126,7 @@ std::size_t vertex_count(const Rings& rings) {
 void register_reading(const Subject& s) {
   const std::size_t n = vertex_count(s.rings);
   if (!s.txt.empty())
-    benchmark::RegisterBenchmark(("scan/" + s.family).c_str(), [&s, n](benchmark::State& state) {
+    add("scan/" + s.family, [&s, n](benchmark::State& state) {
       for (auto _ : state) {
         const PeakMemory memory;
         benchmark::DoNotOptimize(scan_numbers(s.txt));
@@ -126,16 +135,15 @@ void register_reading(const Subject& s) {
     });
   for (const auto& [format, text] : {std::pair{"txt", &s.txt}, {"wkt", &s.wkt}, {"geojson", &s.geojson}}) {
     if (text->empty()) continue;
-    benchmark::RegisterBenchmark(("read-" + std::string(format) + "/" + s.family).c_str(),
-                                 [text, n](benchmark::State& state) {
-                                   for (auto _ : state) {
-                                     const PeakMemory memory;
-                                     benchmark::DoNotOptimize(parse_parts(*text));
-                                     report(state, memory, n);
-                                   }
-                                 });
+    add("read-" + std::string(format) + "/" + s.family, [text, n](benchmark::State& state) {
+      for (auto _ : state) {
+        const PeakMemory memory;
+        benchmark::DoNotOptimize(parse_parts(*text));
+        report(state, memory, n);
+      }
+    });
   }
-  benchmark::RegisterBenchmark(("check/" + s.family).c_str(), [&s, n](benchmark::State& state) {
+  add("check/" + s.family, [&s, n](benchmark::State& state) {
     for (auto _ : state) {
       state.PauseTiming();
       Rings copy = s.rings;
@@ -152,7 +160,7 @@ void register_triangulations(const Subject& s) {
   for (const std::string& name : kTriangulations) {
     const Algorithm* a = find_algorithm(name);
     if (a == nullptr || refusal(*a, *polygon)) continue;
-    benchmark::RegisterBenchmark((name + "/" + s.family).c_str(), [a, polygon](benchmark::State& state) {
+    add(name + "/" + s.family, [a, polygon](benchmark::State& state) {
       for (auto _ : state) {
         const PeakMemory memory;
         Counters counters;
@@ -160,7 +168,7 @@ void register_triangulations(const Subject& s) {
         report(state, memory, polygon->size());
       }
     });
-    benchmark::RegisterBenchmark(("validate-" + name + "/" + s.family).c_str(), [a, polygon](benchmark::State& state) {
+    add("validate-" + name + "/" + s.family, [a, polygon](benchmark::State& state) {
       Counters counters;
       const Decomposition d = a->run(*polygon, counters);
       for (auto _ : state) {
@@ -176,7 +184,7 @@ void register_triangulations(const Subject& s) {
 // `polydecomp run` as a user runs it: read, check, triangulate, validate, print.
 void register_end_to_end(const Subject& s, const fs::path& polydecomp) {
   const std::string command = polydecomp.string() + " run --algorithm monotone --input " + s.file.string() + " >/dev/null";
-  benchmark::RegisterBenchmark(("run-monotone/" + s.family).c_str(), [command](benchmark::State& state) {
+  add("run-monotone/" + s.family, [command](benchmark::State& state) {
     for (auto _ : state)
       if (std::system(command.c_str()) != 0) state.SkipWithError(("failed: " + command).c_str());
   })->UseRealTime();
@@ -245,13 +253,4 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace pd
 
-int main(int argc, char** argv) {
-  return pd::run_on_large_stack([&] {
-    try {
-      return pd::run(argc, argv);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "error: %s\n", e.what());
-      return 2;
-    }
-  });
-}
+int main(int argc, char** argv) { return pd::benchmark_main(argc, argv, pd::run); }

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <exception>
 
 namespace pd {
 namespace {
@@ -52,6 +54,17 @@ int run_on_large_stack(const std::function<int()>& body) {
     }
   }
   return body();
+}
+
+int benchmark_main(int argc, char** argv, int (*run)(int, char**)) {
+  return run_on_large_stack([&] {
+    try {
+      return run(argc, argv);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return 2;
+    }
+  });
 }
 
 }  // namespace pd

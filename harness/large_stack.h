@@ -18,4 +18,8 @@ namespace pd {
 // be reserved, and returns its result; if none can, calls it on this thread.
 int run_on_large_stack(const std::function<int()>& body);
 
+// A benchmark program's main(): `run` on a large stack, an exception escaping it reported as one
+// `error:` line and exit status 2.
+int benchmark_main(int argc, char** argv, int (*run)(int, char**));
+
 }  // namespace pd
