@@ -9,117 +9,28 @@
 // (180-degree) vertices and horizontal edges allowed. Output: n+3h-3 diagonals, n+2h-2
 // non-degenerate triangles, no Steiner points.
 //
-// 1. The trapezoidal decomposition of the edges, inserted in a random order (see "Deviation from the
-//    paper" below), with its search structure (a DAG of point nodes, segment nodes and trapezoid
-//    leaves). Inserting an edge locates its endpoints, splits their trapezoids by horizontal cuts,
-//    threads the edge down through the trapezoids it crosses, splits each in two and merges the
-//    pieces whose separating cut the edge now blocks.
-// 2. The log* phases: the insertions are cut into phases ending after about N(h) = n / log^(h) n
-//    edges. After each phase the edges not yet inserted are traced through the decomposition and
-//    each remembers the trapezoids its endpoints lie in, so that its own search later starts there.
-//    A run of pending edges is walked from trapezoid to trapezoid; where it starts, at an inserted
-//    edge, one search from the run's previous start finds it (expected O(log(N(h)/N(h-1))) for
-//    O(N(h)) runs in expectation, O(n) per phase like the walking).
-// 3. In every trapezoid inside the polygon whose top and bottom vertices are not joined by one of its
-//    sides, the diagonal between them; this cuts the polygon into monotone pieces, which
-//    triangulate_monotone_pieces (monotone.h) triangulates in linear time.
+// 1. The trapezoidal decomposition of the edges, inserted in a random order, with its search DAG
+//    (point nodes, segment nodes, trapezoid leaves): locate the endpoints, split their trapezoids,
+//    thread the edge down through the trapezoids it crosses, merge what the edge now separates.
+// 2. The log* phases: after each phase (about n / log^(h) n edges) the pending edges are traced
+//    through the decomposition, so that each one's search later starts where its endpoints lie.
+// 3. In every inside trapezoid whose top and bottom vertices are not joined by a side, the diagonal
+//    between them: monotone pieces, which triangulate_monotone_pieces (monotone.h) triangulates.
 //
-// Deviation from the paper: the insertion order. The paper inserts the edges in a uniformly random
-// order. Here the order is a biased randomized insertion order (BRIO: N. Amenta, S. Choi, G. Rote,
-// "Incremental constructions con BRIO", SoCG 2003): each edge draws a round independently, the last
-// round L = ceil(log2 n) with probability 1/2, round L-1 with 1/4, and so on, round 0 with the
-// remaining 2^-L; the rounds are inserted in turn, each in polygon order, so that consecutive
-// insertions work next to one another and the cells they make lie near one another in memory. After
-// round k the inserted edges are a Bernoulli sample S_k (each edge in it with probability 2^(k-L)),
-// and S_(k-1) is an independent half of S_k. Phase h ends with round L - floor(log2 log^(h) n), so
-// it has inserted a random sample of N(h) to 2N(h) edges in expectation (and phases that would end
-// together are one, at most log* n in all). The expected bound stays O(n log* n), by Clarkson and
-// Shor's counting (the trapezoids defined by a sample and crossed by at most j of its edges number
-// O((j+1)^3) per edge of the sample, and O((j+1)^4) of them contain a given point):
-// (a) tracing after a phase crosses O(n) trapezoids in expectation, as in the paper, since the
-//     inserted edges are a random sample;
-// (b) whatever the order within round k, every trapezoid that exists during it is defined by edges of
-//     S_k and crossed by none of S_(k-1): one crossed by j edges of S_k does with probability 2^-j,
-//     so O(|S_k|) trapezoids exist during round k in expectation, and threading, which destroys the
-//     trapezoids it crosses, costs O(n) over all rounds;
-// (c) a search for a point descends through the nodes that replaced trapezoids containing it, O(1)
-//     of them per round by the same count; phase h spans at most log^(h) n + 2 rounds and inserts
-//     fewer than 2n / log^(h) n edges in expectation, so its searches cost O(n).
-// Measured at n = 10^6 (seed 1, `polydecomp run`, medians of 3 interleaved calls): random r = n/4
-// 0.79 s against 1.31 s in uniformly random order, comb r = 16 1.29 s against 1.67 s; the counters
-// change by less than 20% (search steps up to 18% more, tracing steps up to 18% fewer).
+// Deviation from the paper: the insertion order is a biased randomized insertion order (BRIO,
+// Amenta, Choi and Rote, SoCG 2003: rounds of Bernoulli samples, each round in polygon order), so
+// that consecutive insertions work near one another in memory; docs/algorithms/seidel.md proves the
+// expected bound stays O(n log* n) (Clarkson and Shor's counting). Unlike the classic C code
+// (Narkhede and Manocha, tolerance 1e-7), every test is exact: orient() or a coordinate comparison,
+// with ties broken by an infinitesimal shear (the sweep order `above`, monotone.h) and by the other
+// endpoint of the edge being inserted. The random order comes from the project's own generator with a
+// fixed seed, so the output is the same on every machine.
 //
-// Deviations from the classic C implementation (Narkhede and Manocha, Graphics Gems V), which
-// compares coordinates with a tolerance C_EPS = 1e-7: every test here is exact, orient() or a
-// comparison of coordinates. Heights are compared in the sweep order `above` (y, then x; monotone.h),
-// an infinitesimal shear under which no two vertices are level, so horizontal edges and equal heights
-// are ordinary. A point equal to a node's point, or lying on a node's segment (only an endpoint shared
-// by two edges can), is decided by the other endpoint of the edge being inserted, as if the point
-// were moved a little along that edge. The classic code relocates every pending endpoint by a search
-// from its old leaf; this one walks the pending edges as the paper does. The random order comes from
-// the project's own generator with a fixed seed, so the output is the same on every machine.
-//
-// Memory (not in the paper; it changes no step, result or counter). What follows was built and measured
-// while the order was uniformly random: every insertion then read records at random addresses, and
-// beyond the caches the time per operation grew with n. Under the BRIO order the lookahead still pays:
-// without it, at n = 10^6 (seed 1, medians of 3 interleaved calls), random r = n/4 took 0.99 s against
-// 0.92 s, comb r = 16 1.46 s against 1.26 s, random r = 16 0.83 s against 0.78 s and x4-quads r = n/3
-// 0.98 s against 0.79 s.
-// Since the order is known in advance, the reads of the next kLookahead insertions are started early:
-// the edge's record is prefetched 2*kLookahead insertions ahead, its start cell and whether its ends
-// are points yet kLookahead ahead, and meanwhile each pending insertion's search for its upper endpoint
-// is advanced one step per insertion, prefetching what the next step reads: the next node, and at a
-// segment node first its lower endpoint. This is exact, not a guess: a search node never changes (only
-// a leaf becomes a node), so the path walked early is the path the insertion would walk, and the
-// insertion resumes the search where it stands. Once the search stands on a leaf, the same budget of
-// one step per insertion walks read-only down along the edge (as tracing does), prefetching each
-// trapezoid the edge will cross, its neighbours and its bottom vertex; this only warms the cache (the
-// insertion re-reads everything). Each insertion is advanced at most kLookahead-1 times, so the extra
-// work is O(n) and the expected bound stays O(n log* n). Tracing (step 2) interleaves kTracers runs of
-// pending edges, one step of each in turn, so that their cache misses overlap; each run takes the
-// steps it would take alone, since tracing only reads the decomposition. A cell (a trapezoid, or the
-// node that replaced it) is 32 bytes aligned to 32, so that every cell lies in one cache line (a
-// 40-byte cell straddled two lines half of the time, and the cells are most of the memory): a segment
-// node therefore keeps only its upper endpoint inline and reads the lower one from the polygon, which
-// the lookahead and tracing prefetch one step early. Measured at n = 10^6 (random, r = n/4): the
-// 32-byte cells about 5% faster than 40-byte ones, the prefetches of lower endpoints and point marks
-// 2-3% more. Measured there and not kept: reading the edges' endpoints from the polygon instead of
-// their records (7% slower), one record for an endpoint's point node and the segment node under it
-// (a sixth fewer cells, no faster), lookahead depths 4-10 or two steps per insertion, 8-32 tracers,
-// tracing rounds split into a pass of reads and a pass of steps (all within the noise). Also measured
-// and not kept: the cells in chunks of 2^15 (1 MiB), found through a table of chunk addresses, in place
-// of the one array reserved for 8n cells. glibc maps a block above its mmap threshold (at most 32 MiB)
-// afresh and unmaps it when it is freed, so at n = 10^6 the one array costs about 70k page faults in
-// every call, while chunks come from the heap and later calls reuse them (`perf stat -e page-faults`,
-// random r = n/4, runs that also generate and validate: 217k for one call and 505k for five; with
-// chunks 136k for one and 187k for six). In the paper sweep's setting (one call per key, after
-// cgal-cdt's; 3-5 interleaved rounds) most keys at n = 10^6 were 5-12% faster, random r = n/4 6-8%, but
-// not every key in every run (random and spiral r = 16 16-25% slower in one run of all families), and
-// at n = 10^5 most keys were slower, notch-heavy in all three runs (14-44%). How much heap memory a
-// call finds to reuse depends on what ran before it; at 10^5, where the cells fit in the cache, the
-// table's extra load on every step may also cost more than the faults save. Nor kept: the one array in
-// 2 MiB pages (aligned to them, madvise(MADV_HUGEPAGE), transparent huge pages in "madvise" mode on the
-// reference machine, a virtual machine): each key alone in a fresh process (3 rounds, seed 1, n = 10^6),
-// random r = n/4 0.98 s became 1.20 s and comb r = 16 1.05 s 1.36 s (spiral r = 16 0.69 s 0.66 s);
-// after other keys in the same process random r = n/4 was 7% faster but comb r = 16 30% slower.
-// Nor kept: the one array in a mapping of its own whose pages are made present 2 MiB at a time before
-// the first cell there is made (madvise(MADV_POPULATE_WRITE)), so that no page fault (about 37k per
-// call at n = 10^6) falls inside an insertion. Random r = n/4, n = 10^6, seeds 1-3, after cgal-cdt's
-// call in the same process, 6 interleaved rounds: 5-8% faster in one run, 2% faster to 5% slower in a
-// later one. With 2 MiB pages as well: 9% faster on random r = n/4 and 18% on random r = 16 in one
-// run of 4 rounds, and in a run of every family at n = 10^6 (3 rounds) from 37% faster (convex) to 33%
-// slower (random r = 16); a first call after the machine had idled took 1.8 s against 1.15-1.22 s.
-// On the reference machine (a virtual machine) what a fresh page costs depends on the host, and
-// differences of this size are within the run-to-run noise. Nor kept: renumbering the cells after each
-// phase's tracing (search nodes first, in their order, then the trapezoids in order of their top
-// vertex, O(n) a phase), so that the next phase's insertions find the trapezoids around neighbouring
-// vertices near one another in memory: at n = 10^6 (random, r = n/4, 2 runs) the insertions of the
-// third and fourth phases took 7-29% less time (30-125 ms each), but the renumberings before them cost
-// 90-120 and 180-215 ms (each reads and writes every cell at random addresses). Nor kept: the cells
-// an insertion makes placed in a block of 4, 6 or 8 slots of their own per edge, in edge order (the
-// rest after all blocks), so that trapezoids made by neighbouring edges of the polygon lie near one
-// another: at n = 10^6 (random, r = n/4, seed 1, 5 interleaved rounds) medians of 1.35-1.38 s against
-// 1.37 s for the one array, within the noise.
+// Hot loop: point location and threading in the DAG. The cells (trapezoids and the nodes that replace
+// them) are 32 bytes aligned to 32, one cache line each; the next kLookahead insertions' searches are
+// advanced one step per insertion with prefetches (exact: a search node never changes), and tracing
+// interleaves kTracers runs so that their cache misses overlap. The layout and the experiments
+// behind it (and those not kept) are in docs/algorithms/seidel.md.
 #include "core/registry.h"
 #include "engines/triangulation/monotone.h"
 
@@ -225,8 +136,8 @@ class Trapezoidation {
     allocate({kNone, kNone, kNone, kNone, {kNone, kNone}, {kNone, kNone}});  // the plane; cell 0 is the root
   }
 
-  // Inserts every edge in the order of the header's "Deviation" note, phase by phase, tracing the rest
-  // after each phase.
+  // Inserts every edge in the BRIO order (docs/algorithms/seidel.md, "Deviation from the paper"),
+  // phase by phase, tracing the rest after each phase.
   void build() {
     const InsertionOrder order = brio_order();
     std::uint32_t done = 0;
@@ -375,7 +286,7 @@ class Trapezoidation {
     return cell;
   }
 
-  // Inserts order[begin, end) with the lookahead of the header's "Memory" note: slot k % kLookahead
+  // Inserts order[begin, end) with the lookahead of the header's hot-loop note: slot k % kLookahead
   // holds the lookahead of insertion k.
   void insert_phase(const std::vector<std::uint32_t>& order, std::uint32_t begin, std::uint32_t end) {
     std::array<Lookahead, kLookahead> ahead;
@@ -623,8 +534,8 @@ class Trapezoidation {
   // search (from the run's old trapezoid) finds where the run starts; walking along each edge of the
   // run finds where it ends, which is where the next one starts (its shared vertex is no point of the
   // decomposition yet). A run only reads the decomposition and writes its own edges' starts, so
-  // kTracers runs are traced at once, one step each in turn, and their cache misses overlap (header,
-  // "Memory"). Every run takes the same steps as it would alone.
+  // kTracers runs are traced at once, one step each in turn, and their cache misses overlap (the
+  // header's hot-loop note). Every run takes the same steps as it would alone.
   void trace_pending() {
     std::array<Tracer, kTracers> tracers;
     std::uint32_t next_vertex = 0, busy = 0;

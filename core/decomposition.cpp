@@ -120,7 +120,7 @@ struct Rotation {
 // of the rows, without searching any row.
 template <class P>
 Rotation sorted_rotation(const std::vector<P>& pts, const std::vector<HalfEdge>& edges) {
-  if (edges.size() >= (std::uint64_t{1} << 32)) malformed("more than 2^32 half-edges");
+  if (edges.size() >= (std::uint64_t{1} << 32)) malformed("2^32 half-edges or more");
   const std::size_t m = pts.size();
   const auto count = static_cast<HalfEdgeId>(edges.size());
   Rotation rot;

@@ -42,12 +42,7 @@ inline int orient(const QPoint& p, const QPoint& q, const QPoint& r) {
   return static_cast<int>(CGAL::orientation(p, q, r));
 }
 
-// Whether p lies on the closed segment ab, and whether the closed segments ab and cd share a point.
-// Exact, for input points and exact points alike.
-template <class P>
-bool on_closed_segment(const P& a, const P& b, const P& p) {
-  return orient(a, b, p) == 0 && CGAL::collinear_are_ordered_along_line(a, p, b);
-}
+// Whether the closed segments ab and cd share a point. Exact, for input points and exact points alike.
 template <class P>
 bool closed_segments_meet(const P& a, const P& b, const P& c, const P& d) {
   const int o1 = orient(a, b, c), o2 = orient(a, b, d);

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <numeric>
 #include <string>
@@ -61,6 +60,7 @@ std::string fold_back_fault(const std::vector<P>& cycle, const NameOf& name) {
 // Distinct vertices, no fold-back, then the sweep of core/sweep.h, which names two edges that meet.
 template <class P>
 std::string simplicity_fault(const std::vector<P>& cycle, const NameOf& name) {
+  if (cycle.size() < 3) return std::to_string(cycle.size()) + " vertices; a cycle needs at least 3";
   const std::vector<std::uint32_t> order = lexicographic_order(cycle);
   if (std::string dup = duplicate_vertices(cycle, order, name); !dup.empty()) return dup;
   if (std::string fold = fold_back_fault(cycle, name); !fold.empty()) return fold;

@@ -67,9 +67,9 @@ class LayoutSweep {
   std::string fault() {
     std::vector<std::uint32_t> order(edges_.size());
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-      return point(a) < point(b) || (point(a) == point(b) && a < b);
-    });
+    // A merge sort, as for a ring's own check (core/polygon.cpp): introsort falls back to heapsort on
+    // the organ-pipe x order of a monotone ring.
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return point(a) < point(b); });
     for (std::size_t k = 1; k < order.size(); ++k)
       if (point(order[k - 1]) == point(order[k]))
         return vertex_name(order[k - 1]) + " coincides with " + vertex_name(order[k]);

@@ -18,7 +18,7 @@ constexpr double kHalfBound = 1073741824.0;  // 2^30: doubled coordinates stay b
 std::vector<bool> edges_to_split(std::size_t m, std::size_t k, std::uint64_t seed) {
   std::vector<std::size_t> order(m);
   for (std::size_t i = 0; i < m; ++i) order[i] = i;
-  Rng rng(~seed);
+  Rng rng(~seed);  // not the family's own stream (Rng(seed)), which made the polygon
   std::vector<bool> split(m, false);
   for (std::size_t i = 0; i < k; ++i) {
     std::swap(order[i], order[i + rng.below(m - i)]);
@@ -36,7 +36,13 @@ std::vector<Point> generate_with_collinear(const std::string& family, std::size_
     throw GeneratorError("at n=" + std::to_string(n) + " at most n/2 = " + std::to_string(n / 2) +
                          " vertices can be collinear (one on an edge of the polygon of n - k vertices), not " +
                          std::to_string(k));
-  const std::vector<Point> base = generate(family, n - k, r, seed);
+  std::vector<Point> base;
+  try {
+    base = generate(family, n - k, r, seed);
+  } catch (const GeneratorError& e) {  // the message names n - k: say where that number comes from
+    throw GeneratorError("with " + std::to_string(k) + " collinear vertices the polygon under them has n - k = " +
+                         std::to_string(n - k) + " vertices: " + e.what());
+  }
   for (const Point& p : base)
     if (!(std::abs(p.x()) < kHalfBound && std::abs(p.y()) < kHalfBound))
       throw GeneratorError("family " + family + " at n=" + std::to_string(n - k) + " has coordinates of 2^30 or " +

@@ -273,8 +273,10 @@ int cmd_generate(const std::vector<std::string>& args) {
   const std::uint64_t seed = vm["seed"].as<Count>().value;
   Rings rings;
   try {
-    rings = vm.count("collinear") ? Rings{generate_with_collinear(family, n, reflex, vm["collinear"].as<Count>().value, seed)}
-                                  : generate_with_holes(family, n, reflex, holes, seed);
+    if (vm.count("collinear"))
+      rings.push_back(generate_with_collinear(family, n, reflex, vm["collinear"].as<Count>().value, seed));
+    else
+      rings = generate_with_holes(family, n, reflex, holes, seed);
   } catch (const std::invalid_argument& e) {
     usage(e.what());
   }

@@ -1,7 +1,7 @@
 // polydecomp-door-bench: what a user waits for around an algorithm, each part on its own (issue 34).
 //
 // For every family at n = 10^6 (or its largest n), with Google Benchmark (CPU time of the part alone;
-// `make door` takes the median of 3 repetitions and reports their minimum too): the floor (a
+// `make door` takes the median of 3 repetitions; the JSON has their minimum too): the floor (a
 // from_chars scan of the text file's bytes into doubles), the text, WKT and GeoJSON readers on the
 // same polygon, the checked constructor (simplicity, orientation, layout of the rings), every
 // O(n log n) triangulation, its exact validation, and `polydecomp run --algorithm monotone` end to end
@@ -60,6 +60,16 @@ void operator delete(void* p) noexcept { uncounted(p); }
 void operator delete[](void* p) noexcept { uncounted(p); }
 void operator delete(void* p, std::size_t) noexcept { uncounted(p); }
 void operator delete[](void* p, std::size_t) noexcept { uncounted(p); }
+// The aligned forms too: std::pmr's default resource (behind the sweep's node pool) allocates with them.
+void* operator new(std::size_t size, std::align_val_t alignment) {
+  const auto a = static_cast<std::size_t>(alignment);
+  return counted(std::aligned_alloc(a, (std::max<std::size_t>(size, 1) + a - 1) / a * a));
+}
+void* operator new[](std::size_t size, std::align_val_t alignment) { return operator new(size, alignment); }
+void operator delete(void* p, std::align_val_t) noexcept { uncounted(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { uncounted(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { uncounted(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { uncounted(p); }
 
 namespace pd {
 namespace {

@@ -831,8 +831,9 @@ TEST(ChazelleDobkinTables, SameCountOnManySmallPolygons) {
   EXPECT_GT(compared, 500u);
 }
 
-// Degenerate position, where A18' is assumed (algorithms/chazelle_dobkin.cpp): lattice polygons, where loose
-// rays stop at vertices, extensions run along edges and Steiner points fall on lines through vertices.
+// Degenerate position, where A18' is assumed (docs/algorithms/chazelle-dobkin.md): lattice polygons,
+// where loose rays stop at vertices, extensions run along edges and Steiner points fall on lines
+// through vertices.
 // The same count as chazelle-dobkin-n5, which does not rest on Theorem 18, and many rays stopped.
 TEST(ChazelleDobkinTables, SameCountOnDegenerateLatticePolygons) {
   std::mt19937 rng(18);
@@ -965,7 +966,7 @@ TEST(ChazelleDobkinTables, EveryTipX4HasALooseX4OnTheSameNotches) {
 
 // ---- the rows E and W themselves, entry by entry, against Lemma 9 by brute force ----
 
-// T(g, h; m) as the header of algorithms/chazelle_dobkin.cpp defines it. S is taken from the program
+// T(g, h; m) as docs/algorithms/chazelle-dobkin.md defines it. S is taken from the program
 // rather than recomputed: its counts are checked against chazelle-dobkin-n5's by the tests above, and the
 // rows are checked here given S.
 bool tight(const cd::ProgramCubic& program, int g, int h, int m) {
@@ -1073,8 +1074,8 @@ TEST(ChazelleDobkinTables, RowsHoldExactlyTheLooseX4OfTightInnerNotches) {
   EXPECT_GT(seen.in_w, 200);
 }
 
-// The scans read each query's witness from the places its X sees, found with geodesics (header of
-// algorithms/chazelle_dobkin.cpp, (7)). It must be the Y where a walk testing every Y in turn with
+// The scans read each query's witness from the places its X sees, found with geodesics
+// (docs/algorithms/chazelle-dobkin.md, (7)). It must be the Y where a walk testing every Y in turn with
 // the segment search stops: every entry of every row, inner notch and rays, the same in both on polygons
 // of every family large enough for long passes (and each rotated by a third).
 TEST(ChazelleDobkinTables, GeodesicsFindTheWitnessesOfWalksAlone) {
@@ -1139,7 +1140,7 @@ TEST(ChazelleDobkinTables, ScanAndLookupsStayCubic) {
     find_algorithm("chazelle-dobkin")->run(p, counters);
     EXPECT_LE(counters["x4_scan_steps"] - counters["x4_p4_tests"], 16 * r * r * r) << label(s);
     EXPECT_LE(counters["x4_lookup_steps"], r * r * r / 3) << label(s);
-    // What X sees: O(1) amortized per query and insert, O(r) per scan for the funnels (header, (7)).
+    // What X sees: O(1) amortized per query and insert, O(r) per scan for the funnels (docs/algorithms/chazelle-dobkin.md, (7)).
     EXPECT_LE(counters["x4_p4_tests"], r * r * r) << label(s);
     EXPECT_LE(counters["x4_funnel_steps"], r * r * r) << label(s);
     EXPECT_LE(counters["x4_funnel_points"], r * r * r) << label(s);

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -45,8 +47,23 @@ TEST(Polygon, RejectsRepeatedVerticesAndFoldsAndDegenerateRings) {
   EXPECT_NE(error_of({{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}}), "accepted");
 }
 
-// The quadratic definition: distinct vertices, edges that share a vertex meet only there, other
-// edges not at all.
+// The quadratic definition, in integers (independent of the predicates under test): distinct
+// vertices, edges that share a vertex meet only there, other edges not at all.
+long long cross(const Point& o, const Point& a, const Point& b) {
+  const auto x = [](double v) { return static_cast<long long>(v); };
+  return (x(a.x()) - x(o.x())) * (x(b.y()) - x(o.y())) - (x(a.y()) - x(o.y())) * (x(b.x()) - x(o.x()));
+}
+int sign(long long v) { return (v > 0) - (v < 0); }
+bool between(const Point& a, const Point& b, const Point& p) {  // p on the closed segment ab, given collinear
+  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= p.y() &&
+         p.y() <= std::max(a.y(), b.y());
+}
+bool on_segment(const Point& a, const Point& b, const Point& p) { return cross(a, b, p) == 0 && between(a, b, p); }
+bool segments_meet(const Point& a, const Point& b, const Point& c, const Point& d) {
+  if (sign(cross(a, b, c)) * sign(cross(a, b, d)) < 0 && sign(cross(c, d, a)) * sign(cross(c, d, b)) < 0) return true;
+  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
+}
+
 bool simple_by_brute_force(const std::vector<Point>& v) {
   const std::size_t n = v.size();
   for (std::size_t i = 0; i < n; ++i)
@@ -54,10 +71,10 @@ bool simple_by_brute_force(const std::vector<Point>& v) {
       if (v[i] == v[j]) return false;
       const Point &a = v[i], &b = v[(i + 1) % n], &c = v[j], &d = v[(j + 1) % n];
       if (j == i + 1) {
-        if (on_closed_segment(a, b, d) || on_closed_segment(c, d, a)) return false;
+        if (on_segment(a, b, d) || on_segment(c, d, a)) return false;
       } else if (i == 0 && j == n - 1) {
-        if (on_closed_segment(a, b, c) || on_closed_segment(c, d, b)) return false;
-      } else if (closed_segments_meet(a, b, c, d)) {
+        if (on_segment(a, b, c) || on_segment(c, d, b)) return false;
+      } else if (segments_meet(a, b, c, d)) {
         return false;
       }
     }
@@ -85,6 +102,44 @@ TEST(Polygon, SimplicitySweepAgreesWithTheBruteForce) {
     ASSERT_EQ(is_simple_cycle(exact(v), nullptr), expected) << "trial " << trial;
   }
   EXPECT_GT(simple, 2000u);
+}
+
+// orient's inline filter (core/geometry.h) against CGAL's exact predicate where the filter must give
+// up or decide close to its bound: points a few units in the last place off a line, at magnitudes from
+// the subnormals to 1e300, and exactly collinear points.
+TEST(Geometry, OrientAgreesWithTheExactPredicateNearDegeneracy) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> ulps(-3, 3);
+  std::size_t zero = 0;
+  for (const double scale : {1e-310, 1e-300, 1e-150, 1e-8, 1.0, 3.0, 1e8, 1e150, 1e300}) {
+    for (int trial = 0; trial < 3000; ++trial) {
+      const Point p(unit(rng) * scale, unit(rng) * scale), q(unit(rng) * scale, unit(rng) * scale);
+      const double t = unit(rng);
+      double x = p.x() + t * (q.x() - p.x()), y = p.y() + t * (q.y() - p.y());
+      for (int k = ulps(rng); k != 0; k += k > 0 ? -1 : 1) y = std::nextafter(y, k > 0 ? HUGE_VAL : -HUGE_VAL);
+      const Point r(x, y);
+      const int exact = static_cast<int>(CGAL::orientation(p, q, r));
+      zero += exact == 0;
+      ASSERT_EQ(orient(p, q, r), exact) << "scale " << scale << " trial " << trial;
+      ASSERT_EQ(orient(q, r, p), exact);
+      ASSERT_EQ(orient(r, q, p), -exact);
+    }
+  }
+  std::uniform_int_distribution<int> small(-1000, 1000);
+  for (const double scale : {0x1p-1060, 0x1p-500, 1.0, 0x1p500, 0x1p1000}) {  // exactly collinear
+    for (int trial = 0; trial < 1000; ++trial) {
+      const int i = small(rng), j = small(rng), k = small(rng), l = small(rng);
+      const Point p(i * scale, j * scale), q(k * scale, l * scale), r((2 * k - i) * scale, (2 * l - j) * scale);
+      ASSERT_EQ(static_cast<int>(CGAL::orientation(p, q, r)), 0);
+      ASSERT_EQ(orient(p, q, r), 0) << "scale " << scale;
+      ++zero;
+    }
+  }
+  EXPECT_GE(zero, 5000u);
+  const Point a(0, 0), b(1e300, 1e300), c(-1e300, -1e300), far(1.7e308, -1.7e308);
+  EXPECT_EQ(orient(a, b, c), 0);
+  EXPECT_EQ(orient(c, b, far), static_cast<int>(CGAL::orientation(c, b, far)));
 }
 
 TEST(Polygon, DropsTheClosingVertex) {

@@ -1,10 +1,8 @@
 // The minimum convex decomposition with Steiner points: the independent checker
 // (tests/steiner_optimum_check.h) against known answers and the bounds of Chazelle's thesis, then every
 // registered optimal program with Steiner points against the checker.
-//
-// On a branch where no such program is registered yet, SteinerOptimalPrograms.AreRegistered fails on
-// purpose (the comparisons would otherwise pass vacuously; they skip themselves instead of running the
-// checker for nothing); every other test passes.
+// SteinerOptimalPrograms.AreRegistered fails if none is (the comparisons would otherwise pass
+// vacuously).
 #include "core/registry.h"
 #include "core/validate.h"
 #include "generators/family.h"

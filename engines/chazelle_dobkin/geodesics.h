@@ -1,5 +1,5 @@
 // Geodesics (shortest paths inside a simple polygon) between points of its boundary, for chazelle-dobkin's
-// test of "XY lies in P" between two loose rays (algorithms/chazelle_dobkin.cpp, (7)), and for
+// test of "XY lies in P" between two loose rays (docs/algorithms/chazelle-dobkin.md, (7)), and for
 // both Chazelle-Dobkin programs' views across the notches (engines/chazelle_dobkin/patterns.h): how each
 // geodesic leaves its root (its first turn) and whether a straight one touches the boundary.
 //

@@ -1,5 +1,6 @@
-// chazelle-dobkin's loose rays and X4 tables: see tables.h for the classes, and the header of
-// algorithms/chazelle_dobkin.cpp for the method, the reconstructions and the bounds.
+// chazelle-dobkin's loose rays and X4 tables: see tables.h for the classes, the header of
+// algorithms/chazelle_dobkin.cpp for the method and the bounds, and docs/algorithms/chazelle-dobkin.md
+// for the reconstructions.
 #include "engines/chazelle_dobkin/tables.h"
 
 #include <algorithm>

@@ -1,7 +1,8 @@
 // chazelle-dobkin's program and its X4 tables (Sec. 2.4 of Chazelle's thesis): the loose rays with their
 // sorted lists, the table entry (Witness) and the program whose STEP 3 fills and reads the rows E and W.
-// The paper, the reconstructions with their proofs, the bounds, the preconditions and the deviations are
-// in the header of algorithms/chazelle_dobkin.cpp, which registers the algorithm. The classes are
+// The bounds and the preconditions are in the header of algorithms/chazelle_dobkin.cpp, which registers
+// the algorithm; what the thesis says, the reconstructions with their proofs and the deviations in
+// docs/algorithms/chazelle-dobkin.md. The classes are
 // here so that the tests can read the rows the program fills (entry(), S()) after its run.
 #pragma once
 
@@ -168,7 +169,7 @@ class ProgramCubic final : public Program {
     std::vector<std::vector<std::uint64_t>> levels_;
   };
 
-  // The funnel of the geodesics from G's two ends to a point e (header, (7)): from the end of G on its
+  // The funnel of the geodesics from G's two ends to a point e (docs/algorithms/chazelle-dobkin.md, (7)): from the end of G on its
   // left, seen from the apex (where the two geodesics meet), to the end on its right. For X on the open
   // G, the geodesic from X to e runs straight to a funnel vertex (funnel_tangent), on the ray that holds
   // the first point of the boundary it meets, and on along the funnel. When the apex is an end of G the
@@ -190,7 +191,7 @@ class ProgramCubic final : public Program {
     std::vector<int> place;       // by_at inverted: the place of each insert
     std::vector<int> below_rank;  // below_rank[v]: the places whose Y has a rank along H below v
     // kGeodesics: per end of H (0 its notch, 1 its far end), the funnel of the geodesics from G's ends
-    // to it, once a query has needed them; per query the places its X sees, [lo, hi) (header, (7)),
+    // to it, once a query has needed them; per query the places its X sees, [lo, hi) (docs/algorithms/chazelle-dobkin.md, (7)),
     // once a pass has needed them; and where the last query's searches ended, in the funnels and along
     // H.
     std::array<Funnel, 2> funnels;
@@ -314,17 +315,17 @@ class ProgramCubic final : public Program {
   const FilteredPoint& y_at(const Lists& lists, int place) { return rays_.loose_point(lists.H, lists.at_place(place).ray); }
 
   // How X on G sees Y on H: seen, or not with no seen point of H between Y and H's notch, or its far
-  // end (header, (7)).
+  // end (docs/algorithms/chazelle-dobkin.md, (7)).
   enum class View { kSeen, kTowardsNotch, kTowardsFarEnd };
 
-  // What X on G sees of H (header, (7)): f1 and f2, the first turns (or ends) of the geodesics from X to
+  // What X on G sees of H (docs/algorithms/chazelle-dobkin.md, (7)): f1 and f2, the first turns (or ends) of the geodesics from X to
   // H's notch and to its far end, and the orientation of X, f1, f2, 0 when X sees no point of H.
   struct Sight {
     std::array<const FilteredPoint*, 2> first_met{};
     int angle = 0;
   };
 
-  // The places X sees, [lo, hi) in by_at order (header, (7)). Each search starts where the last
+  // The places X sees, [lo, hi) in by_at order (docs/algorithms/chazelle-dobkin.md, (7)). Each search starts where the last
   // query's ended: along a pass the queries come in order along G, f1 and f2 move monotonically over
   // the funnels (F3), and the ends of what X sees along H monotonically too (M), so a scan costs
   // O(queries + inserts + funnels) orientations.
