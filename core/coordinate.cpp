@@ -1,6 +1,7 @@
 #include "core/coordinate.h"
 
 #include <cfloat>
+#include <cstddef>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -66,6 +67,8 @@ std::string_view magnitude_digits(std::string_view t) {
 
 // Integers of at most 15 digits are below 2^53, so exactly doubles.
 constexpr std::size_t kAlwaysExactDigits = 15;
+// A decimal without an exponent this short is far from overflow (309 digits) and underflow (307 zeros).
+constexpr std::ptrdiff_t kPlainDecimalLength = 300;
 
 // The nearest double (strtod's rounding; from_chars, which needs no terminated copy, where it can).
 double nearest_double(std::string_view t) {
@@ -85,6 +88,21 @@ std::string exact_integer_text(double d) {
 }
 
 }  // namespace
+
+std::optional<double> plain_coordinate(const char*& at, const char* end) {
+  double d;
+  const char* start = at;
+  const auto [stop, error] = std::from_chars(start, end, d);
+  if (error != std::errc()) return std::nullopt;
+  bool point = false;
+  for (const char* c = start; c < stop; ++c) {
+    if (*c == '.') point = true;
+    else if (!is_digit(*c) && *c != '-') return std::nullopt;
+  }
+  if (stop - start > (point ? kPlainDecimalLength : static_cast<std::ptrdiff_t>(kAlwaysExactDigits))) return std::nullopt;
+  at = stop;
+  return d;
+}
 
 std::string quoted_input(std::string_view text, std::size_t limit) {
   std::string out = "'";

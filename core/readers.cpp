@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -71,39 +70,20 @@ bool starts_with_word(std::string_view text, std::string_view word) {
 
 // ---- plain text: `x y` per line, '#' comments, an optional count line before the first vertex.
 
+// What separates the fields of a line.
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == ',' || c == '\r'; }
+
 // The fields of a line into `fields` (reused from line to line, so that a million lines make no
 // million vectors).
 void split_fields(std::string_view line, std::vector<std::string_view>& fields) {
   fields.clear();
   std::size_t start = 0;
   for (std::size_t i = 0; i <= line.size(); ++i) {
-    if (i == line.size() || line[i] == ' ' || line[i] == '\t' || line[i] == ',' || line[i] == '\r') {
+    if (i == line.size() || is_blank(line[i])) {
       if (i > start) fields.push_back(line.substr(start, i - start));
       start = i + 1;
     }
   }
-}
-
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == ',' || c == '\r'; }
-
-// A plain number at `at`, [-]D+ of at most 15 digits or [-]D*.D* of at most 300 characters: the
-// coordinate rule gives it exactly from_chars' value, since it can neither overflow, underflow nor be
-// an integer that no double holds. Returns it and moves `at` past it; returns nothing for anything
-// else, which the full rule reads. The caller checks what follows it.
-std::optional<double> plain_number(const char*& at, const char* end) {
-  double d;
-  const char* start = at;
-  const auto [stop, error] = std::from_chars(start, end, d);
-  if (error != std::errc()) return std::nullopt;
-  bool point = false;
-  for (const char* c = start; c < stop; ++c) {
-    if (*c == '.') point = true;
-    else if (!is_digit(*c) && *c != '-') return std::nullopt;
-  }
-  if (stop - start > (point ? 300 : 15)) return std::nullopt;
-  at = stop;
-  return d;
 }
 
 // A line at `at` that is exactly `x y` in plain numbers, read in one pass: the vertex, with `at` moved
@@ -114,7 +94,7 @@ std::optional<Point> plain_vertex(const char*& at, const char* end) {
   double xy[2];
   for (double& v : xy) {
     while (p < end && is_blank(*p)) ++p;
-    const std::optional<double> d = plain_number(p, end);
+    const std::optional<double> d = plain_coordinate(p, end);
     if (!d || (p < end && !is_blank(*p) && *p != '\n')) return std::nullopt;
     v = *d;
   }
@@ -242,7 +222,7 @@ class WktReader {
     skip_space();
     const char* end = text_.data() + text_.size();
     const char* at = text_.data() + at_;
-    if (const std::optional<double> d = plain_number(at, end); d && (at == end || ends_number(*at))) {
+    if (const std::optional<double> d = plain_coordinate(at, end); d && (at == end || ends_number(*at))) {
       at_ = static_cast<std::size_t>(at - text_.data());
       return *d;
     }
