@@ -1,6 +1,13 @@
 #include "core/registry.h"
 
+#include "core/json.h"
+
 namespace pd {
+namespace {
+
+const char* flag(bool b) { return b ? "true" : "false"; }
+
+}  // namespace
 
 std::optional<std::string> refusal(const Algorithm& a, const Polygon& p) {
   if (!a.accepts.holes && p.hole_count() > 0) {
@@ -17,6 +24,22 @@ std::optional<std::string> refusal(const Algorithm& a, const Polygon& p) {
            std::to_string(p.size());
   }
   return std::nullopt;
+}
+
+std::string algorithms_json() {
+  std::string out = "[";
+  for (const Algorithm& a : algorithms()) {
+    const std::string max_vertices = a.accepts.max_vertices ? std::to_string(a.accepts.max_vertices) : "null";
+    out += std::string(out.size() > 1 ? ",\n " : "") + "{\"name\": " + json_quote(a.name) +
+           ", \"kind\": " + json_quote(kind_name(a.kind)) + ", \"steiner\": " + flag(a.steiner) +
+           ", \"optimal\": " + flag(a.optimal) + ", \"time_bound\": " + json_quote(a.time_bound) +
+           ", \"pieces_bound\": " + json_quote(a.pieces_bound) + ", \"source\": " + json_quote(a.source) +
+           ", \"peer\": " + (is_peer(a) ? json_quote(a.peer) : "null") + ", \"holes\": " + flag(a.accepts.holes) +
+           ", \"accepts\": {\"holes\": " + flag(a.accepts.holes) +
+           ", \"convex_only\": " + flag(a.accepts.convex_only) + ", \"max_vertices\": " + max_vertices +
+           "}, \"size_ceiling\": " + std::to_string(a.size_ceiling) + "}";
+  }
+  return out + "]\n";
 }
 
 }  // namespace pd

@@ -52,6 +52,9 @@ inline bool is_peer(const Algorithm& a) { return !a.peer.empty(); }
 // Why `a` does not take `p` (one sentence naming the limit), or nothing when it does.
 std::optional<std::string> refusal(const Algorithm& a, const Polygon& p);
 
+// The registry as `polydecomp list --json` prints it (docs/CONTRACT.md, "polydecomp list").
+std::string algorithms_json();
+
 // All registered algorithms, sorted by name.
 inline const std::vector<Algorithm>& algorithms() { return NamedRegistry<Algorithm>::all(); }
 // The algorithm called `name`, or nullptr.

@@ -165,4 +165,16 @@ Rings generate_with_holes(const std::string& family, std::size_t n, std::optiona
   return rings;
 }
 
+Rings generate_polygon(const GenerateRequest& request) {
+  const Family* f = find_family(request.family);
+  if (request.reflex && f && f->r_is_outcome)
+    throw GeneratorError("family " + request.family + " does not choose r: it is an outcome of the method (leave out " +
+                         "--reflex; polydecomp check counts it)");
+  if (request.collinear && request.holes)
+    throw GeneratorError("--collinear and --holes do not go together: collinear vertices are made for families without holes");
+  if (request.collinear)
+    return {generate_with_collinear(request.family, request.n, request.reflex, *request.collinear, request.seed)};
+  return generate_with_holes(request.family, request.n, request.reflex, request.holes, request.seed);
+}
+
 }  // namespace pd

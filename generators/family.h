@@ -112,6 +112,19 @@ bool register_hole_family(HoleFamily f);
 Rings generate_with_holes(const std::string& family, std::size_t n, std::optional<std::size_t> r,
                           std::optional<std::size_t> h, std::uint64_t seed);
 
+// What `polydecomp generate` asks for (docs/CONTRACT.md, "polydecomp generate").
+struct GenerateRequest {
+  std::string family;
+  std::size_t n = 0;
+  std::optional<std::size_t> reflex, holes, collinear;
+  std::uint64_t seed = 1;
+};
+
+// The polygon `generate` makes, the outer ring then its holes, through generate_with_collinear or
+// generate_with_holes; throws as they do, and GeneratorError for options that do not go together (an r
+// asked of a family whose r is an outcome, collinear vertices with holes).
+Rings generate_polygon(const GenerateRequest& request);
+
 }  // namespace pd
 
 #define REGISTER_FAMILY(...) \

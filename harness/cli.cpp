@@ -17,27 +17,22 @@
 #include "harness/last_resort.h"
 #include "harness/plugins.h"
 #include "harness/progress.h"
+#include "harness/run.h"
 #include "harness/write_all.h"
 
 #include <boost/program_options.hpp>
 
 #include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <functional>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -48,13 +43,6 @@ namespace po = boost::program_options;
 
 namespace pd {
 namespace {
-
-constexpr int kUsage = 2, kBadPolygon = 3, kAlgorithmFailed = 4, kInvalidResult = 5, kCannotWrite = 6;
-
-struct Exit {
-  int status;
-  std::string message;
-};
 
 [[noreturn]] void usage(const std::string& why) { throw Exit{kUsage, why}; }
 
@@ -178,22 +166,6 @@ void emit(const std::string& text, const std::string& path) {
 
 std::string json_bool(bool b) { return b ? "true" : "false"; }
 
-std::string list_json() {
-  std::string out = "[";
-  for (const Algorithm& a : algorithms()) {
-    const std::string max_vertices = a.accepts.max_vertices ? std::to_string(a.accepts.max_vertices) : "null";
-    out += std::string(out.size() > 1 ? ",\n " : "") + "{\"name\": " + json_quote(a.name) +
-           ", \"kind\": " + json_quote(kind_name(a.kind)) + ", \"steiner\": " + json_bool(a.steiner) +
-           ", \"optimal\": " + json_bool(a.optimal) + ", \"time_bound\": " + json_quote(a.time_bound) +
-           ", \"pieces_bound\": " + json_quote(a.pieces_bound) + ", \"source\": " + json_quote(a.source) +
-           ", \"peer\": " + (is_peer(a) ? json_quote(a.peer) : "null") + ", \"holes\": " + json_bool(a.accepts.holes) +
-           ", \"accepts\": {\"holes\": " + json_bool(a.accepts.holes) +
-           ", \"convex_only\": " + json_bool(a.accepts.convex_only) + ", \"max_vertices\": " + max_vertices +
-           "}, \"size_ceiling\": " + std::to_string(a.size_ceiling) + "}";
-  }
-  return out + "]\n";
-}
-
 // The README's algorithm table.
 std::string list_markdown() {
   std::string out =
@@ -241,7 +213,7 @@ int cmd_list(const std::vector<std::string>& args) {
   add_plugins_option(opts);
   const auto vm = parse("list", args, opts);
   register_plugins_of(vm);
-  write_stdout(vm.count("json") ? list_json() : vm.count("markdown") ? list_markdown() : list_text());
+  write_stdout(vm.count("json") ? algorithms_json() : vm.count("markdown") ? list_markdown() : list_text());
   return 0;
 }
 
@@ -260,211 +232,27 @@ int cmd_generate(const std::vector<std::string>& args) {
   } catch (const std::invalid_argument& e) {
     usage(e.what());
   }
-  std::optional<std::size_t> reflex, holes;
-  if (vm.count("reflex")) reflex = vm["reflex"].as<Count>().value;
-  if (vm.count("holes")) holes = vm["holes"].as<Count>().value;
-  const std::string family = vm["family"].as<std::string>();
-  if (reflex && find_family(family) && find_family(family)->r_is_outcome)
-    usage("family " + family + " does not choose r: it is an outcome of the method (leave out --reflex; " +
-          "polydecomp check counts it)");
-  if (vm.count("collinear") && holes)
-    usage("--collinear and --holes do not go together: collinear vertices are made for families without holes");
-  const std::size_t n = vm["n"].as<Count>().value;
-  const std::uint64_t seed = vm["seed"].as<Count>().value;
+  GenerateRequest request;
+  request.family = vm["family"].as<std::string>();
+  request.n = vm["n"].as<Count>().value;
+  if (vm.count("reflex")) request.reflex = vm["reflex"].as<Count>().value;
+  if (vm.count("holes")) request.holes = vm["holes"].as<Count>().value;
+  if (vm.count("collinear")) request.collinear = vm["collinear"].as<Count>().value;
+  request.seed = vm["seed"].as<Count>().value;
   Rings rings;
   try {
-    if (vm.count("collinear"))
-      rings.push_back(generate_with_collinear(family, n, reflex, vm["collinear"].as<Count>().value, seed));
-    else
-      rings = generate_with_holes(family, n, reflex, holes, seed);
+    rings = generate_polygon(request);
   } catch (const std::invalid_argument& e) {
     usage(e.what());
   }
   if (rings.size() > 1 && format == Format::Txt)
-    usage("family " + family + " makes polygons with holes, which plain text cannot hold: add --format wkt or --format geojson");
+    usage("family " + request.family + " makes polygons with holes, which plain text cannot hold: add --format wkt or --format geojson");
   emit(format_polygon(rings, format), vm["output"].as<std::string>());
   return 0;
 }
 
-// What `run` prints: the report on stdout, the SVG figure (empty without --svg), and why the result
-// is not valid (empty when it is, or when it was not validated).
-struct RunOutput {
-  std::string out, svg, invalid;
-};
-
 // "" or " (--max-memory SIZE)": what an out-of-memory message adds.
 std::string memory_note;
-
-// One part's pieces and validation; `reason` is empty when they are valid or were not validated.
-struct PartCheck {
-  std::vector<Piece> pieces;
-  std::optional<bool> valid;
-  std::string reason;
-};
-
-PartCheck check_part(const Algorithm& algo, const Polygon& polygon, const Decomposition& d, bool validate_result) {
-  PartCheck c;
-  try {
-    c.pieces = pieces_of(polygon, d);
-  } catch (const std::invalid_argument& e) {
-    c.valid = false;
-    c.reason = e.what();
-  }
-  if (validate_result && !c.valid) {
-    const Validation v = validate_pieces(polygon, d, c.pieces, algo.kind, algo.steiner);
-    c.valid = v.ok;
-    c.reason = v.reason;
-  }
-  return c;
-}
-
-std::string count_text(const char* name, std::size_t value, bool shown) {
-  return shown ? std::string(" ") + name + "=" + std::to_string(value) : "";
-}
-
-// The result's pieces, validation and report, over every part.
-RunOutput report(const Algorithm& algo, const std::vector<Polygon>& parts, const std::vector<Decomposition>& ds,
-                 const Counters& counters, double seconds, bool json, bool validate_result, bool svg) {
-  std::vector<PartCheck> checks;
-  std::vector<PartResult> results;
-  std::optional<bool> valid;
-  std::string reason;
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    checks.push_back(check_part(algo, parts[k], ds[k], validate_result));
-    if (checks[k].valid) valid = valid.value_or(true) && *checks[k].valid;
-    if (reason.empty() && !checks[k].reason.empty())
-      reason = (parts.size() > 1 ? "part " + std::to_string(k) + ": " : "") + checks[k].reason;
-  }
-  for (std::size_t k = 0; k < parts.size(); ++k) results.push_back({&parts[k], &ds[k], &checks[k].pieces});
-  RunOutput result;
-  if (json) {
-    result.out = run_json({algo.name, results, valid, seconds, &counters});
-  } else {
-    const RunTotals t = totals_of(results);
-    result.out = algo.name + ": n=" + std::to_string(t.n) + " reflex=" + std::to_string(t.reflex) +
-                 count_text("holes", t.holes, t.holes > 0) + count_text("parts", parts.size(), parts.size() > 1) +
-                 " pieces=" + std::to_string(t.pieces) + " steiner=" + std::to_string(t.steiner) +
-                 (valid ? std::string(" valid=") + (*valid ? "yes" : "NO (" + reason + ")") : "") +
-                 " seconds=" + double_text(seconds) + "\n";
-  }
-  if (valid == false) result.invalid = reason.empty() ? "no reason given" : reason;
-  if (svg) result.svg = run_svg(results, algo.name);
-  return result;
-}
-
-// Runs the algorithm on each part in turn; the seconds and the counters are totals over the parts.
-RunOutput run_output(const Algorithm& algo, const std::vector<Polygon>& parts, bool json, bool validate_result,
-                     bool svg) {
-  Counters counters;
-  std::vector<Decomposition> ds(parts.size());
-  double seconds = 0;
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    Counters part_counters;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      ds[k] = algo.run(parts[k], part_counters);
-    } catch (const std::bad_alloc&) {
-      throw Exit{kAlgorithmFailed, algo.name + " ran out of memory" + memory_note};
-    } catch (const std::exception& e) {
-      throw Exit{kAlgorithmFailed, algo.name + " failed" + (parts.size() > 1 ? " on part " + std::to_string(k) : "") +
-                                       ": " + e.what()};
-    }
-    seconds += ds[k].own_seconds ? *ds[k].own_seconds
-                                 : std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    for (const auto& [name, value] : part_counters) counters[name] += value;
-  }
-  try {
-    return report(algo, parts, ds, counters, seconds, json, validate_result, svg);
-  } catch (const std::bad_alloc&) {
-    throw Exit{kAlgorithmFailed, "out of memory validating and reporting " + algo.name + "'s result" + memory_note};
-  }
-}
-
-// --max-seconds: `compute` runs in a forked child, which sends back its output (or its Exit) through a
-// pipe; at the deadline the parent kills the child and fails with one error line. A separate process is
-// the one safe way to stop an algorithm anywhere (inside GMP, inside CGAL) without its cooperation, and
-// nothing is written until the child has finished, so a stopped run leaves no partial output. The
-// child dies with its parent (a killed `run` leaves nothing running).
-// The message format: "STATUS\n" then, for status 0, "OUT_LENGTH SVG_LENGTH\n" + out + svg + invalid;
-// otherwise the Exit message.
-std::string encode(const RunOutput& r) {
-  return "0\n" + std::to_string(r.out.size()) + " " + std::to_string(r.svg.size()) + "\n" + r.out + r.svg + r.invalid;
-}
-std::string encode(const Exit& e) { return std::to_string(e.status) + "\n" + e.message; }
-
-RunOutput decode(const std::string& message) {
-  std::size_t at = message.find('\n');
-  const int status = std::stoi(message.substr(0, at));
-  std::string rest = message.substr(at + 1);
-  if (status != 0) throw Exit{status, rest};
-  at = rest.find('\n');
-  std::istringstream lengths(rest.substr(0, at));
-  std::size_t out_length = 0, svg_length = 0;
-  lengths >> out_length >> svg_length;
-  const std::string body = rest.substr(at + 1);
-  return {body.substr(0, out_length), body.substr(out_length, svg_length), body.substr(out_length + svg_length)};
-}
-
-// Reads the pipe to its end, or returns false at the deadline.
-bool read_until(int fd, std::chrono::steady_clock::time_point deadline, std::string& message) {
-  char buffer[1 << 16];
-  for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) return false;
-    pollfd wait_for{fd, POLLIN, 0};
-    const int ready = ::poll(&wait_for, 1, static_cast<int>(std::min<std::int64_t>(left.count(), 1 << 30)));
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready == 0) return false;
-    const ssize_t k = ::read(fd, buffer, sizeof buffer);
-    if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) return true;
-    message.append(buffer, static_cast<std::size_t>(k));
-  }
-}
-
-[[noreturn]] void run_child(int parent, int fd, const std::string& name, const std::function<RunOutput()>& compute) {
-  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-  if (::getppid() != parent) ::_exit(0);  // the parent died before the line above
-  send_last_resort_reports_to(fd);
-  std::string message;
-  try {
-    message = encode(compute());
-  } catch (const Exit& e) {
-    message = encode(e);
-  } catch (const std::bad_alloc&) {
-    message = encode(Exit{kAlgorithmFailed, name + " ran out of memory" + memory_note});
-  } catch (const std::exception& e) {
-    message = encode(Exit{kAlgorithmFailed, name + " failed: " + e.what()});
-  }
-  write_all(fd, message);
-  ::_exit(0);
-}
-
-RunOutput with_deadline(const std::string& name, double max_seconds, const std::function<RunOutput()>& compute) {
-  int fds[2];
-  if (::pipe(fds) != 0) throw Exit{kAlgorithmFailed, "cannot create a pipe for --max-seconds"};
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                               std::chrono::duration<double>(max_seconds));
-  const pid_t parent = ::getpid();
-  const pid_t child = ::fork();
-  if (child < 0) throw Exit{kAlgorithmFailed, "cannot fork for --max-seconds"};
-  if (child == 0) {
-    ::close(fds[0]);
-    run_child(parent, fds[1], name, compute);
-  }
-  ::close(fds[1]);
-  std::string message;
-  const bool finished = read_until(fds[0], deadline, message);
-  ::close(fds[0]);
-  if (!finished) ::kill(child, SIGKILL);
-  int status = 0;
-  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (!finished) throw Exit{kAlgorithmFailed, name + " stopped after " + double_text(max_seconds) + " s (--max-seconds)"};
-  if (WIFSIGNALED(status)) throw Exit{kAlgorithmFailed, name + " crashed (signal " + std::to_string(WTERMSIG(status)) + ")"};
-  if (message.empty()) throw Exit{kAlgorithmFailed, name + " ended without a result"};
-  return decode(message);
-}
 
 // A size in bytes: digits with an optional K, M, G or T (powers of 1024).
 std::uint64_t byte_size(const std::string& text) {
@@ -534,18 +322,15 @@ int cmd_run(const std::vector<std::string>& args) {
   const std::string svg = svg_path(vm);
   if (vm.count("max-memory")) limit_memory_growth(byte_size(vm["max-memory"].as<std::string>()), vm["max-memory"].as<std::string>());
   const std::vector<Polygon> parts = read_input(vm["input"].as<std::string>());
+  check_accepted(*algo, parts);
   PolygonTotals totals;
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    if (const auto why = refusal(*algo, parts[k]))
-      throw Exit{kBadPolygon, (parts.size() > 1 ? "part " + std::to_string(k) + ": " : "") + *why};
-    totals.add(parts[k]);
-  }
-  const auto compute = [&] { return run_output(*algo, parts, vm.count("json") > 0, vm.count("no-validate") == 0, !svg.empty()); };
+  for (const Polygon& part : parts) totals.add(part);
+  RunOptions options{vm.count("json") > 0, vm.count("no-validate") == 0, !svg.empty(), max_seconds, memory_note};
   std::optional<RunOutput> result;
   {
     const Heartbeat heartbeat(name + " on n = " + std::to_string(totals.n) + ", r = " + std::to_string(totals.reflex) +
                               (max_seconds ? " (stops at " + double_text(*max_seconds) + " s)" : ""));
-    result = max_seconds ? with_deadline(name, *max_seconds, compute) : compute();
+    result = run_algorithm(*algo, parts, options);
   }
   if (!svg.empty()) emit(result->svg, svg);
   write_stdout(result->out);

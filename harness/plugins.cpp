@@ -17,9 +17,13 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <condition_variable>
 #include <filesystem>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <sstream>
+#include <thread>
 
 namespace pd {
 namespace {
@@ -115,6 +119,50 @@ class ManifestReader {
   ::_exit(127);
 }
 
+// The thread that forks the commands. A child's parent-death signal fires when the thread that forked
+// it ends, not the process; the commands are forked from this one thread, which lives as long as its
+// process, so that a command outlives the call that started it (the Python module runs each call on a
+// thread of its own) and still dies with polydecomp. A forked copy of polydecomp gets its own.
+class Launcher {
+ public:
+  static Launcher& of_this_process() {
+    static Launcher* launcher = nullptr;  // never destroyed: its thread waits until the process ends
+    if (launcher == nullptr || launcher->owner_ != ::getpid()) launcher = new Launcher;
+    return *launcher;
+  }
+
+  // Runs `task` on the launcher's thread and returns when it is done.
+  void run(const std::function<void()>& task) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return task_ == nullptr; });
+    task_ = &task;
+    bool finished = false;
+    finished_ = &finished;
+    ready_.notify_one();
+    done_.wait(lock, [&] { return finished; });
+  }
+
+ private:
+  Launcher() : owner_(::getpid()) { std::thread([this] { serve(); }).detach(); }
+
+  void serve() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      ready_.wait(lock, [&] { return task_ != nullptr; });
+      (*task_)();
+      *finished_ = true;
+      task_ = nullptr;
+      done_.notify_all();
+    }
+  }
+
+  pid_t owner_;
+  std::mutex mutex_;
+  std::condition_variable ready_, done_;
+  const std::function<void()>* task_ = nullptr;
+  bool* finished_ = nullptr;
+};
+
 // One running command: a line written, a line read.
 class PluginProcess {
  public:
@@ -124,7 +172,10 @@ class PluginProcess {
 
   // The line the command answers `request` with. Throws std::runtime_error (and stops the command) when
   // it cannot be started, exits or crashes before answering.
+  // Calls from several threads (the Python module's) take turns: the command answers one line at a time.
   std::string exchange(const std::string& request) {
+    const std::lock_guard<std::mutex> turn(turn_);
+    if (pid_ > 0 && owner_ != ::getpid()) forget_parents_command();
     if (pid_ <= 0) start();
     if (!write_all(to_, request + "\n")) fail_ended();
     std::string line;
@@ -144,20 +195,23 @@ class PluginProcess {
     int in[2], out[2], status[2];
     if (::pipe(in) != 0 || ::pipe(out) != 0 || ::pipe2(status, O_CLOEXEC) != 0)
       throw std::runtime_error(name_ + ": cannot create pipes");
-    const pid_t pid = ::fork();
+    pid_t pid = -1;
+    Launcher::of_this_process().run([&] {
+      pid = ::fork();
+      if (pid == 0) {
+        ::close(in[1]);
+        ::close(out[0]);
+        ::close(status[0]);
+        start_child(argv_, folder_, in[0], out[1], status[1]);
+      }
+    });
     if (pid < 0) throw std::runtime_error(name_ + ": cannot fork");
-    if (pid == 0) {
-      ::close(in[1]);
-      ::close(out[0]);
-      ::close(status[0]);
-      start_child(argv_, folder_, in[0], out[1], status[1]);
-    }
     ::close(in[0]);
     ::close(out[1]);
     ::close(status[1]);
     ::fcntl(in[1], F_SETFD, FD_CLOEXEC);
     ::fcntl(out[0], F_SETFD, FD_CLOEXEC);
-    pid_ = pid, to_ = in[1], from_ = out[0];
+    pid_ = pid, to_ = in[1], from_ = out[0], owner_ = ::getpid();
     buffer_.clear();
     int exec_errno = 0;
     const ssize_t k = ::read(status[0], &exec_errno, sizeof exec_errno);
@@ -166,8 +220,16 @@ class PluginProcess {
       fail("cannot start '" + argv_[0] + "' in " + folder_.string() + ": " + std::strerror(exec_errno));
   }
 
+  // In a forked copy of polydecomp (`run --max-seconds`'s child) the running command is the parent's:
+  // this copy starts its own, so that a child stopped in mid-answer leaves no half line to the parent.
+  void forget_parents_command() {
+    ::close(to_);
+    ::close(from_);
+    pid_ = -1;
+  }
+
   void stop() {
-    if (pid_ <= 0) return;
+    if (pid_ <= 0 || owner_ != ::getpid()) return;
     ::close(to_);
     ::close(from_);
     ::kill(pid_, SIGKILL);
@@ -212,7 +274,9 @@ class PluginProcess {
   std::vector<std::string> argv_;
   fs::path folder_;
   pid_t pid_ = -1;
+  pid_t owner_ = -1;  // the process that started the command
   int to_ = -1, from_ = -1;
+  std::mutex turn_;
   std::string buffer_;
 };
 

@@ -8,6 +8,8 @@ packages=(build-essential clang libclang-rt-14-dev cmake git libcgal-dev libgeos
           libboost-dev libboost-program-options-dev libbenchmark-dev libgtest-dev googletest nlohmann-json3-dev
           python3 python3-matplotlib python3-numpy python3-flake8
           gmt-dcw python3-netcdf4   # the DCW corpus (make corpus: scripts/build_dcw_corpus.py)
+          pybind11-dev python3-pybind11 python3-pytest python3-shapely   # the Python module (python/)
+          python3-venv python3-pip python3-setuptools python3-wheel      # its pip install (pyproject.toml)
           procps   # pgrep, with which the orphan test finds a killed run's child
           nodejs)  # node runs the JavaScript peers (peers/*.json); any installed nodejs package counts
 missing=()

@@ -118,6 +118,18 @@ TEST(Validate, AcceptsATJunctionInsideThePolygon) {
   EXPECT_FALSE(validate_pieces(p, pts, {{0, 1, 4}, {1, 2, 4}, {0, 2, 3}}, Kind::Convex, true).ok);
 }
 
+TEST(Validate, AcceptsATriangulationWithASteinerPointInside) {
+  // Square 0..3 fanned from a Steiner point c=4 at the centre: 4 triangles, two more than n - 2.
+  const Polygon p = Polygon::make({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  Decomposition d;
+  const VertexId c = 4 + d.add_steiner(QPoint(2, 2));
+  for (VertexId i = 0; i < 4; ++i) d.add_cut(i, c);
+  const Validation v = validate(p, d, Kind::Triangulation, true);
+  EXPECT_TRUE(v.ok) << v.reason;
+  const std::vector<QPoint> pts = exact_points(p, d);
+  EXPECT_FALSE(validate_pieces(p, pts, {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}}, Kind::Triangulation, true).ok);
+}
+
 TEST(Validate, HandlesCollinearVertices) {
   // A square with a flat vertex 1 on the bottom edge.
   const Polygon p = Polygon::make({{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}});
