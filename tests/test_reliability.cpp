@@ -33,7 +33,7 @@ void expect_every_algorithm_valid(const Polygon& p, const std::string& label) {
   }
 }
 
-// Every input the fuzz targets saved (data/fuzz-regressions; README.md, "Reliability"), through the same
+// Every input the fuzz targets saved (data/fuzz-regressions; docs/reliability.md), through the same
 // checks the fuzz targets make.
 TEST(FuzzRegressions, EverySavedInputPassesTheFuzzChecks) {
   const std::filesystem::path dir = PD_SOURCE_DIR "/data/fuzz-regressions";
