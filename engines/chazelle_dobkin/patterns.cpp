@@ -1,5 +1,6 @@
-// Pattern detection for Chazelle-Dobkin: see engines/chazelle_dobkin/patterns.h for the method, the
-// reconstruction of Theorem 14's segments and the deviation from Theorem 11.
+// Pattern detection for Chazelle-Dobkin: engines/chazelle_dobkin/patterns.h says the method, and
+// docs/algorithms/chazelle-dobkin-patterns.md the reconstruction of Theorem 14's segments and the
+// deviation from Theorem 11.
 #include "engines/chazelle_dobkin/patterns.h"
 
 #include "engines/chazelle_dobkin/geodesics.h"

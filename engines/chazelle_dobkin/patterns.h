@@ -14,89 +14,14 @@
 //     extreme segments r_ij, l_ji towards the other two exist (2) and meet pairwise in C, A, B (3);
 //     the hexagon Q = a C b A c B has a non-empty kernel (4), and S is any point of that kernel.
 //
-// Reconstruction (the OCR text of the definitions of r_ij and l_ji is garbled and Figures 2.21 and
-// 2.22 are lost), from what the proof of Theorem 14 says the segments express:
-//   - Seen from a notch a, the boundary points a sees come in boundary order as a sweep turns
-//     counter-clockwise around a (Sec. 2.3.2, the remark on superranges, here with our
-//     counter-clockwise polygons). In an X3-pattern the extension of aS beyond S lies in the angle bSc
-//     (no angle at S is reflex), so the boundary point a sees in direction aS lies on the chain from b
-//     to c. The directions from a whose visible boundary point is on that chain form one angular
-//     interval, bounded by the direction where a's view passes from the chain a..b to the chain b..c
-//     and the one where it passes from b..c to c..a. That direction (`transition`) goes through b when
-//     a sees b, and otherwise through the vertex whose window hides b: between the last vertex x
-//     that a sees before b and the first y after it, a sees part of one edge; b lies behind the
-//     window through x when it comes before that edge, behind the window through y when after it
-//     (both x and y are windows when a looks between them onto a farther edge). These are the lines
-//     of Q's edges aC and aB; with Q's other four edges, the kernel of Q is the intersection of six
-//     open half-planes, one on each side of each notch.
-//   - The segments' clipping to the notch's range (R(v_i, L_i)) and to the triangle (R(v_i, v_i v_j))
-//     becomes the range cone of each (adapted) notch and the open triangle abc: a further seven
-//     half-planes. S is taken as the average of the vertices of this convex region (exact rationals),
-//     which lies in its interior whenever the region has positive area (degenerate position below).
-//   - Condition 3 (C, A and B lie on the segments R(.,.), i.e. Q lies in P) needs no test of its own:
-//     with the views above it holds at every point S of the region. Suppose aS met P's boundary before
-//     S, first at p. The direction aS lies strictly between a's views across b and across c, so p lies
-//     on the chain b..c, neither b nor c. The chord ap cuts P into D (bounded by ap, the chain from b
-//     to p and the chain a..b) and D' (ap, the chain from p to c and c..a). b's segment towards S
-//     starts into D and cannot cross ap (its line meets aS only at S, beyond p); the first boundary
-//     point it could meet is on c..a (b's views), which D's boundary touches only at a, off the
-//     segment (S lies in the open triangle); so it reaches S inside D. Likewise c's puts S in D', and
-//     D and D' meet only on ap: a contradiction. So a sees S, and b and c likewise, and S, in the
-//     joints' cones and the open triangle, is a Steiner point. The thesis tests condition 3 in O(1)
-//     on segments precomputed from the superranges; here nothing is left to test, and an X3 test is
-//     the half-planes alone, O(1). (Checked while writing this against a test of S's three edges
-//     against the boundary: every candidate of both programs on 3,530 polygons, 20,405 candidates,
-//     and every triple of bare notches and branches on 2,080 polygons, 872,436 candidates, collinear
-//     vertices included; no edge failed. Those figures are from before the arms were allowed
-//     (below); since, every output of both programs passed the validator on 7,000 lattice
-//     polygons, mean r 12 and 17, and 300 more with r from 11 to 26.)
-//   - Filter (not in the thesis; it changes no answer): the region is first computed in interval
-//     arithmetic, by the same code as the exact one (one template on both kernels), which gives up at
-//     the first sign it cannot settle; when it settles every sign, its branches are the exact
-//     computation's, so the region it finds empty is empty. Most triples end
-//     there without rational arithmetic (on random n = 2000, r = 200, 98% of 1.3M, and every triple
-//     on spiral r = 198): chazelle-dobkin 14.2 s -> 3.2 s and 9.5 s -> 1.5 s on those inputs.
-//   - Degenerate position. A joint whose angle is still reflex includes its arms: an edge along the
-//     extension of one of the angle's sides leaves 180 degrees there, which resolves it (Definition
-//     2.2 forbids reflex angles only), and the proof of condition 3 above holds for it unchanged (that
-//     direction points into P's interior). The views stay open: S on a window line puts a vertex
-//     of P on S's edge, also where the window line runs along an arm (then both bound the region,
-//     the arm allowed and the view's line not). The triangle stays open as the thesis's angles at S
-//     are: S on a side puts a straight angle at S, and the two notches' edges form one segment
-//     between them that resolves both; for bare notches that is an X2-pattern on its own, for
-//     adapted ones (Y3, Y4) that the program loses nothing is not proven here (the checker, which
-//     allows such points, found no case). So the region may be a segment or a single point (e.g.
-//     where arms of three joints meet, on lattice polygons), and then S is the average of its
-//     vertices, a point of its relative interior. Such patterns are real: the independent checker
-//     (tests/steiner_optimum_check.h) needs one for the optimum of the test case "arms of three
-//     joints through one point".
-//   - Corollary 14.2 (a subtree's Steiner point chosen to turn its edge at z_i as far as possible):
-//     the extreme vertex of the same region, seen from z_i. It lies on the region's boundary: it is
-//     the Steiner point when it meets the open conditions (it lies on arms of joints only), and is
-//     otherwise moved 1/64 of the way towards the region's average, into the (relative) interior.
-//   - X4 (Theorem 15): "applying the two reductions ... takes A to the intersection of v_i r_ij and
-//     v_j l_ji": each Steiner point is put at the tip of Q facing the chain between its two notches,
-//     where each notch's edge is turned as far towards that chain as its range, its view across the
-//     other notch and the line between the two allow. The pattern exists when both tips exist with
-//     their edges in P, the segment AB lies in P (the convex chains again), and AB leaves no reflex angle at A or at B (it lies
-//     in the cone between the extensions of A's two notch edges beyond A, and likewise at B); edges
-//     that would pass through a vertex of P are refused, as the thesis assumes no reduction meets a
-//     notch (the pattern then reduces to a Y-pattern, found as such).
-// Deviation: superranges (Theorem 11, O(r log n) per notch with convex chains; Lemma 5 reads R(v, D)
-// off them) are replaced by trees of geodesics from each notch (engines/chazelle_dobkin/geodesics.h), which give the
-// same views across the notches in the same O(n + r^2 log n) in all: P is cut into at most 2r + 1
-// convex faces by vertical chords from the notches (O(n + r^2 log n) by ray shooting on the boundary's
-// convex arcs, engines/search/ray_shooting.h), and a funnel walk over those faces from each notch (O(r log r))
-// gives, for every other notch w, the first turn of the geodesic to w: the view passes across w's
-// boundary position along the ray to that turn (or to w, seen), and w is a diagonal's end when the
-// geodesic runs straight through P's interior (views_from_geodesics). The thesis's own algorithm for
-// Theorem 11, a stack-based sweep over the convex chains, is not implemented. The tests hold these
-// views to walks of a triangulation (Views::kTriangulation: the visibility of every vertex from each
-// notch, engines/search/visibility.h, O(n) per notch after an O(n log n) triangulation, the transitions
-// read from it by binary search), which share no code with them, on every pair of notches of the
-// families and of degenerate lattice polygons.
-// Every test after it costs what Theorems 13-15 say (O(1), or O(r log(n/r)) for a segment against the
-// boundary in X4's tips and tests).
+// The reconstruction of Theorem 14's segments r_ij and l_ji (garbled in the OCR text, Figures 2.21
+// and 2.22 lost), the proof that condition 3 needs no test of its own, degenerate position (arms,
+// regions that are a segment or a point), Corollary 14.2's extreme point, X4 (Theorem 15) and the
+// interval-arithmetic filter: docs/algorithms/chazelle-dobkin-patterns.md.
+// Deviation: superranges (Theorem 11) are replaced by trees of geodesics from each notch
+// (engines/chazelle_dobkin/geodesics.h), in the same O(n + r^2 log n) in all (the same page says how,
+// and how the tests hold these views to walks of a triangulation). Every test after it costs what
+// Theorems 13-15 say: O(1), or O(r log(n/r)) for a segment against the boundary in X4's tips.
 //
 // Exact: every test is an orientation on exact rationals; Steiner points are exact rationals.
 #pragma once

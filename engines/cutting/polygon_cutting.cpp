@@ -11,66 +11,12 @@
 // least 4 vertices. Guarantee: a diagonal (interior inside the polygon, no vertex on it) whose two parts
 // each weigh at most 2C/3, its endpoints weighing 0 in both (exact integer test 3*max <= 2C).
 //
-// Reconstructions and deviations, where the OCR text or the missing figures leave a step open or the
-// text does not hold:
-//
-// 1. "No two vertices share an x-coordinate" is made true by symbolic perturbation: vertices are ordered
-//    by (x, y) (an infinitesimal shear), a "vertical" line lies between two consecutive vertices of that
-//    order (named by a split rank: vertices of smaller rank are on its left), and edges meeting it are
-//    compared by orientation tests alone. Where a concrete line is needed (the points A and B), it is
-//    x = the midpoint of the two vertices' x when those differ; otherwise the line through the midpoint
-//    of the two vertices tilted by a rational slope small enough to separate every vertex as the order
-//    does (Cutter::median_line). All arithmetic is exact.
-// 2. LV, "the edges in topological (vertical) order" [KN73]: the pairs to sort come from a sweep in
-//    (x, y) order that records each pair of edges when they become neighbours in the sweep structure.
-//    Between two edges that overlap in x the structure holds a chain of neighbours, so the order of
-//    every such pair is implied. Edges crossing a vertical line appear along it in LV order (bottom
-//    first). A part keeps LV restricted to its top-polygon edges; its diagonals (at most one per
-//    ancestor cut, O(log n)) are merged in at each line by comparison.
-// 3. The median line of Theorem 3 is taken among the vertices still in the pruned polygon R: between
-//    its vertices of rank floor(m/2) and floor(m/2)+1. Chords next to a window (an earlier line) carry
-//    the window's labels, so fair chords lie strictly between two vertices of R, and each round at
-//    least halves m (the paper's "median of C(P)" with Fig. 3 missing; taken as the median vertex).
-// 4. Pruning (step 4): LP is a linked list of the vertices and of the crossings of earlier lines; a
-//    chord whose labels differ by less than C/3 (more than 2C/3) has its light side, the forward arc
-//    from one crossing to the other (from the other to the one), unlinked in one walk, and the two
-//    crossings joined by a window. A chord whose crossings were unlinked by another chord lies in a
-//    pruned part and is skipped (the Fig. 4 remark). LH and LV are then restricted to what is live: a
-//    vertex still linked, an edge whose start vertex or re-entry crossing is.
-// 4b. Theorems 2 and 3 are false as stated: at a split vertex C the proof writes h(A,B) = h(A,C) +
-//    h(C,B), forgetting C's own weight, and a vertical chord need not exist. The hexagon (0,1) (-2,2)
-//    (-2,-2) (2,-2) (1,0) (2,2) with weights 0 0 1 1 1 1 has chords cutting off 1 or 3 of C = 4 and
-//    none cutting off 2. What does exist is a fair chord or a fair half-chord, a vertical segment from
-//    a vertex v (weighing 0) to the boundary: in the vertical decomposition's tree, point each unfair
-//    half-chord at its heavy side; the trapezoid all of them point into has a fair chord, since each
-//    side of it is one vertex plus at most two light subtrees each lighter than C/3 with that vertex.
-//    The pruning keeps that trapezoid, so the recursion either meets a fair chord or ends with one
-//    vertex w, a reflex vertex with both edges on one side; then one of w's two vertical extensions
-//    is fair (the same count), and Theorem 1 starts from it with a funnel of apex w in place of the
-//    edge containing B.
-// 5. Theorem 1: the paper takes H1 = the hull of the vertices in Q1 = A v(i+1) v(j) B. That is right when
-//    Q1 is convex. When Q1 has a reflex or flat corner at v(i+1) (v(j) on or right of the line of e(i)),
-//    that hull can cross e(i) and leave v(i+1) inside it, and the walk has no start. What the walk needs
-//    is the shortest path from v(i+1) to v(j) in the part of the polygon on that side of AB: a concave
-//    chain that only touches vertices of that side. We build it from hulls in convex regions: Q1 itself
-//    when convex; otherwise the hull of A and the vertices in Q1, whose chain facing B (the tangent from
-//    A, then the hull) is the shortest path from A, and, when v(i+1) is not on it, the hull chain from
-//    v(i+1) in the triangle (A, v(i+1), m) under the tangent Am. Symmetric at v(j), and the same on the
-//    other side of AB for H2. For a half-chord both Q1 and Q2 are triangles.
-// 6. The hulls are Andrew's monotone chain over the candidate vertices read from LH, already in (x, y)
-//    order, so each is linear; the paper's route (the maximal chains of Fig. 6 joined into a simple
-//    polygon K1, then a linear hull of a simple polygon) yields the hull of the same vertices, since
-//    the vertices of non-maximal chains lie inside the hull of the maximal ones. This route needs no K1,
-//    whose construction the missing Fig. 6 leaves unclear where chains touch v(i+1)v(j) at vertices or
-//    run along it. Collinear hull points are kept, so no chain edge has a vertex in its interior.
-// 7. Lemma 6: the scan tries the walk's diagonals and the chain edges, in the order the walk meets them,
-//    and accepts the first whose two parts both weigh at most 2C/3. Why one exists (C >= 2): a chain
-//    edge cutting off at least C/3 is accepted (it stays within one side of AB, which weighs at most
-//    2C/3); otherwise each step of the walk moves less than C/3 + 1 of weight from one part to the
-//    other, and the first diagonal whose forward part weighs at most 2C/3 has the other part at most
-//    2*ceil(C/3) - 2 <= 2C/3. In a funnel, if no diagonal qualifies, one of the two chain edges at the
-//    apex does. For C = 0 any diagonal is fair and the sleeve always has one when n >= 4.
-//    C = 1 is refused (see why_no_fair_cut).
+// Reconstructions and deviations (docs/algorithms/polygon-cutting.md, items 1-7): symbolic
+// perturbation for "no two vertices share an x-coordinate", LV from a sweep, the median line among
+// R's vertices, pruning by windows; Theorems 2 and 3 are false as stated (a fair chord need not
+// exist; a fair half-chord from a vertex does, item 4b); Theorem 1's hulls replaced by shortest
+// paths where Q1 is not convex (item 5), built by Andrew's monotone chain (item 6); Lemma 6's scan
+// and why it finds a fair cut for C >= 2 (item 7). C = 1 is refused (see why_no_fair_cut).
 #include "engines/cutting/polygon_cutting.h"
 
 #include <algorithm>

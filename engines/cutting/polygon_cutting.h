@@ -1,6 +1,7 @@
 // The polygon-cutting theorem (Chazelle, "How to Divide a Polygon Fairly", CMU 1982, paper 004):
 // machinery shared by `polydecomp cut`, cutting-convex and cutting-tri. See polygon_cutting.cpp for the
-// construction, its bounds and what was reconstructed where the paper is unclear.
+// construction and its bounds, docs/algorithms/polygon-cutting.md for what was reconstructed where the
+// paper is unclear.
 //
 // Weights are 0/1 per vertex; C is their sum. A fair cut is a diagonal (a segment between two vertices
 // whose interior lies inside the polygon and meets no vertex) that splits the polygon into two parts
@@ -41,8 +42,8 @@ struct FairCut {
   std::int64_t C, C1, C2;
 };
 
-// Theorem 3: a chord AB of the polygon on a vertical line (see polygon_cutting.cpp for the tilt that
-// stands in for the paper's "no two vertices share an x-coordinate"), A inside edge (edge_a, edge_a+1);
+// Theorem 3: a chord AB of the polygon on a vertical line (docs/algorithms/polygon-cutting.md, item 1:
+// the tilt for the paper's "no two vertices share an x-coordinate"), A inside edge (edge_a, edge_a+1);
 // B inside edge (edge_b, edge_b+1), or, when b_is_vertex, B is vertex edge_b (weighing 0 on both
 // sides). C1 weighs the vertices from edge_a+1 on to B counter-clockwise, C2 those from B on to edge_a,
 // B excluded; both are at most 2C/3.
