@@ -11,6 +11,7 @@ packages=(build-essential clang libclang-rt-14-dev cmake git libcgal-dev libgeos
           pybind11-dev python3-pybind11 python3-pytest python3-shapely   # the Python module (python/)
           python3-venv python3-pip python3-setuptools python3-wheel      # its pip install (pyproject.toml)
           procps   # pgrep, with which the orphan test finds a killed run's child
+          python3-plotly chromium   # the HTML report (analysis/report.py) and its browser test
           nodejs)  # node runs the JavaScript peers (peers/*.json); any installed nodejs package counts
 missing=()
 for p in "${packages[@]}"; do

@@ -5,6 +5,7 @@
   fit         measured growth fitted and judged against a claimed bound
   bounds      the tables of bounds.md: claims against measurements, and the peer comparison
   plots       the figures of results/plots/
+  report      the HTML report of a sweep (DIR/index.html), and the comparison of two results files
   sweep       the driver that runs polydecomp-bench until a sweep is complete, then analyses it
   merge       the shards of a sweep joined into one results file
   rejournal   a sweep's journal written back from its results, to measure some keys again

@@ -1,5 +1,6 @@
 """The sweep driver behind analysis/sweep.py: polydecomp-bench until the sweep (or shard) is complete,
-then the bounds table and the plots (analyse, which analysis/merge.py also runs on a merged sweep).
+then the bounds table, the plots and the HTML report (analyse, which analysis/merge.py also runs on a merged
+sweep).
 
 polydecomp-bench journals every key it finishes and resumes after the keys already journaled. This
 driver keeps it going when a key ends the process:
@@ -17,7 +18,7 @@ import signal
 import subprocess
 import sys
 
-from . import bounds, plots, results
+from . import bounds, plots, report, results
 
 TIMEOUT_EXIT = 75
 USAGE_EXIT = 2
@@ -72,7 +73,8 @@ def run_until_complete(args):
 
 
 def analyse(results_file, results_dir, build, gallery):
-    """Writes RESULTS_DIR/bounds.md and the figures in RESULTS_DIR/plots from one results file."""
+    """Writes RESULTS_DIR/bounds.md, the figures in RESULTS_DIR/plots and the report RESULTS_DIR/index.html
+    (which links the gallery figure, so it comes last) from one results file."""
     polydecomp = os.path.join(build, "polydecomp")
     registry = bounds.load_registry(polydecomp)
     bounds_file = os.path.join(results_dir, "bounds.md")
@@ -80,3 +82,6 @@ def analyse(results_file, results_dir, build, gallery):
     plots_dir = os.path.join(results_dir, "plots")
     made = plots.make_plots(results_file, registry, plots_dir, polydecomp, gallery)
     print("sweep: wrote {} and {} figures in {}".format(bounds_file, len(made), plots_dir), file=sys.stderr)
+    page = os.path.join(results_dir, "index.html")
+    size = report.write_report(results_file, registry, page, bounds_file, os.path.join(plots_dir, "gallery.png"))
+    print("sweep: wrote {} ({:.1f} MB)".format(page, size / 1e6), file=sys.stderr)
