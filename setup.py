@@ -9,6 +9,7 @@ import os
 import shutil
 import subprocess
 import sys
+import sysconfig
 from pathlib import Path
 
 from setuptools import Extension, setup
@@ -30,7 +31,10 @@ class CMakeBuild(build_ext):
             subprocess.run(["cmake", "-S", str(SOURCE), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
                             f"-DPYTHON_EXECUTABLE={sys.executable}"], check=True)
         subprocess.run(["cmake", "--build", str(build), "--target", "pd_python", "-j", jobs], check=True)
-        built = next((build / "python" / "polydecomp").glob("_core*.so"))
+        built = build / "python" / "polydecomp" / ("_core" + sysconfig.get_config_var("EXT_SUFFIX"))
+        if not built.exists():  # the build folder was configured for another Python
+            sys.exit(f"error: {build} holds no module for this Python ({built.name}); "
+                     "set POLYDECOMP_BUILD_DIR to a new folder")
         target = Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built, target)

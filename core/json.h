@@ -42,5 +42,6 @@ struct Json {
 Json parse_json(std::string_view text, bool pack_positions = false);
 
 std::string json_quote(const std::string& s);
+inline const char* json_bool(bool b) { return b ? "true" : "false"; }
 
 }  // namespace pd

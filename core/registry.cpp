@@ -3,11 +3,6 @@
 #include "core/json.h"
 
 namespace pd {
-namespace {
-
-const char* flag(bool b) { return b ? "true" : "false"; }
-
-}  // namespace
 
 std::optional<std::string> refusal(const Algorithm& a, const Polygon& p) {
   if (!a.accepts.holes && p.hole_count() > 0) {
@@ -31,12 +26,12 @@ std::string algorithms_json() {
   for (const Algorithm& a : algorithms()) {
     const std::string max_vertices = a.accepts.max_vertices ? std::to_string(a.accepts.max_vertices) : "null";
     out += std::string(out.size() > 1 ? ",\n " : "") + "{\"name\": " + json_quote(a.name) +
-           ", \"kind\": " + json_quote(kind_name(a.kind)) + ", \"steiner\": " + flag(a.steiner) +
-           ", \"optimal\": " + flag(a.optimal) + ", \"time_bound\": " + json_quote(a.time_bound) +
+           ", \"kind\": " + json_quote(kind_name(a.kind)) + ", \"steiner\": " + json_bool(a.steiner) +
+           ", \"optimal\": " + json_bool(a.optimal) + ", \"time_bound\": " + json_quote(a.time_bound) +
            ", \"pieces_bound\": " + json_quote(a.pieces_bound) + ", \"source\": " + json_quote(a.source) +
-           ", \"peer\": " + (is_peer(a) ? json_quote(a.peer) : "null") + ", \"holes\": " + flag(a.accepts.holes) +
-           ", \"accepts\": {\"holes\": " + flag(a.accepts.holes) +
-           ", \"convex_only\": " + flag(a.accepts.convex_only) + ", \"max_vertices\": " + max_vertices +
+           ", \"peer\": " + (is_peer(a) ? json_quote(a.peer) : "null") + ", \"holes\": " + json_bool(a.accepts.holes) +
+           ", \"accepts\": {\"holes\": " + json_bool(a.accepts.holes) +
+           ", \"convex_only\": " + json_bool(a.accepts.convex_only) + ", \"max_vertices\": " + max_vertices +
            "}, \"size_ceiling\": " + std::to_string(a.size_ceiling) + "}";
   }
   return out + "]\n";

@@ -264,8 +264,7 @@ Validation validate_with(const Polygon& p, const std::vector<P>& pts, const std:
   if (std::string f = chain_fault(p, pts, pieces); !f.empty()) return fail(f);
   if (!areas.adds_up) return fail("the pieces' areas do not add up to the polygon's");
   // Euler's formula: m vertices, all on the boundary, and h holes make m + 2h - 2 triangles. Each
-  // Steiner point inside adds two; the tiling is proven above, so with Steiner points the count is
-  // not checked (which of them lie inside is not known here).
+  // Steiner point inside adds two; with Steiner points the tiling proven above is the whole check.
   const std::size_t triangles = pts.size() + 2 * p.hole_count() - 2;
   if (kind == Kind::Triangulation && pts.size() == p.size() && pieces.size() != triangles)
     return fail(std::to_string(pieces.size()) + " triangles; a triangulation of " + std::to_string(pts.size()) +

@@ -164,8 +164,6 @@ void emit(const std::string& text, const std::string& path) {
   write_through(target, text);
 }
 
-std::string json_bool(bool b) { return b ? "true" : "false"; }
-
 // The README's algorithm table.
 std::string list_markdown() {
   std::string out =

@@ -122,7 +122,9 @@ class ManifestReader {
 // The thread that forks the commands. A child's parent-death signal fires when the thread that forked
 // it ends, not the process; the commands are forked from this one thread, which lives as long as its
 // process, so that a command outlives the call that started it (the Python module runs each call on a
-// thread of its own) and still dies with polydecomp. A forked copy of polydecomp gets its own.
+// thread of its own) and still dies with polydecomp. It is made when the plug-ins are registered,
+// before any other thread runs, and again, unlocked, by a forked copy of polydecomp (`run
+// --max-seconds`'s child), which has one thread.
 class Launcher {
  public:
   static Launcher& of_this_process() {
@@ -174,8 +176,7 @@ class PluginProcess {
   // it cannot be started, exits or crashes before answering.
   // Calls from several threads (the Python module's) take turns: the command answers one line at a time.
   std::string exchange(const std::string& request) {
-    const std::lock_guard<std::mutex> turn(turn_);
-    if (pid_ > 0 && owner_ != ::getpid()) forget_parents_command();
+    const std::lock_guard<std::recursive_mutex> turn(turn_of_this_process());
     if (pid_ <= 0) start();
     if (!write_all(to_, request + "\n")) fail_ended();
     std::string line;
@@ -183,17 +184,34 @@ class PluginProcess {
     return line;
   }
 
+  // Stops the command and throws; in turn with exchange, so that no other call is using it.
   [[noreturn]] void fail(const std::string& why) {
+    const std::lock_guard<std::recursive_mutex> turn(turn_of_this_process());
     stop();
     throw std::runtime_error(name_ + ": " + why);
   }
 
  private:
+  // The lock calls take turns on. A forked copy of polydecomp (one thread) may have inherited it held
+  // by another thread of the parent, and the parent's command with it: the copy takes a lock of its
+  // own and forgets that command (its pipes are closed there: harness/run.cpp), then starts its own,
+  // so that a copy stopped in mid-answer leaves no half line to the parent.
+  std::recursive_mutex& turn_of_this_process() {
+    if (turn_pid_ != ::getpid()) {
+      (void)turn_.release();  // the parent's lock, held or not, is left as it was
+      turn_ = std::make_unique<std::recursive_mutex>();
+      turn_pid_ = ::getpid();
+      pid_ = -1;
+    }
+    return *turn_;
+  }
+
   void start() {
     // A command that has closed its input must not kill polydecomp with SIGPIPE on the next write.
     ::signal(SIGPIPE, SIG_IGN);
+    // Close-on-exec: a command started meanwhile by another thread must not hold these pipes open.
     int in[2], out[2], status[2];
-    if (::pipe(in) != 0 || ::pipe(out) != 0 || ::pipe2(status, O_CLOEXEC) != 0)
+    if (::pipe2(in, O_CLOEXEC) != 0 || ::pipe2(out, O_CLOEXEC) != 0 || ::pipe2(status, O_CLOEXEC) != 0)
       throw std::runtime_error(name_ + ": cannot create pipes");
     pid_t pid = -1;
     Launcher::of_this_process().run([&] {
@@ -209,9 +227,7 @@ class PluginProcess {
     ::close(in[0]);
     ::close(out[1]);
     ::close(status[1]);
-    ::fcntl(in[1], F_SETFD, FD_CLOEXEC);
-    ::fcntl(out[0], F_SETFD, FD_CLOEXEC);
-    pid_ = pid, to_ = in[1], from_ = out[0], owner_ = ::getpid();
+    pid_ = pid, to_ = in[1], from_ = out[0];
     buffer_.clear();
     int exec_errno = 0;
     const ssize_t k = ::read(status[0], &exec_errno, sizeof exec_errno);
@@ -220,16 +236,8 @@ class PluginProcess {
       fail("cannot start '" + argv_[0] + "' in " + folder_.string() + ": " + std::strerror(exec_errno));
   }
 
-  // In a forked copy of polydecomp (`run --max-seconds`'s child) the running command is the parent's:
-  // this copy starts its own, so that a child stopped in mid-answer leaves no half line to the parent.
-  void forget_parents_command() {
-    ::close(to_);
-    ::close(from_);
-    pid_ = -1;
-  }
-
   void stop() {
-    if (pid_ <= 0 || owner_ != ::getpid()) return;
+    if (pid_ <= 0) return;
     ::close(to_);
     ::close(from_);
     ::kill(pid_, SIGKILL);
@@ -238,7 +246,7 @@ class PluginProcess {
 
   int reap() {
     int status = 0;
-    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    while (pid_ > 0 && ::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
     pid_ = -1;
     return status;
@@ -274,9 +282,9 @@ class PluginProcess {
   std::vector<std::string> argv_;
   fs::path folder_;
   pid_t pid_ = -1;
-  pid_t owner_ = -1;  // the process that started the command
   int to_ = -1, from_ = -1;
-  std::mutex turn_;
+  std::unique_ptr<std::recursive_mutex> turn_ = std::make_unique<std::recursive_mutex>();
+  pid_t turn_pid_ = ::getpid();  // the process turn_ belongs to
   std::string buffer_;
 };
 
@@ -412,6 +420,7 @@ void register_plugins(const std::vector<std::string>& folders) {
     for (const auto& entry : fs::directory_iterator(folder))
       if (entry.path().extension() == ".json") manifests.push_back(entry.path());
     std::sort(manifests.begin(), manifests.end());
+    if (!manifests.empty()) Launcher::of_this_process();  // now, while one thread runs
     for (const fs::path& path : manifests) {
       Algorithm a = algorithm_of(path);
       if (find_algorithm(a.name)) throw PluginError(path.string() + ": an algorithm named " + a.name + " exists already");

@@ -5,6 +5,7 @@
 #include "harness/last_resort.h"
 #include "harness/write_all.h"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/prctl.h>
@@ -148,6 +149,10 @@ bool read_until(int fd, std::chrono::steady_clock::time_point deadline, std::str
                             const std::function<RunOutput()>& compute) {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (::getppid() != parent) ::_exit(0);  // the parent died before the line above
+  // Another thread's pipes (another call's deadline, a plug-in's) must not stay open here: their
+  // readers wait for the end of file that only their own writer's exit gives.
+  if (fd > 3) ::close_range(3, static_cast<unsigned>(fd) - 1, 0);
+  ::close_range(static_cast<unsigned>(fd) + 1, ~0U, 0);
   send_last_resort_reports_to(fd);
   std::string message;
   try {
@@ -166,7 +171,7 @@ bool read_until(int fd, std::chrono::steady_clock::time_point deadline, std::str
 RunOutput with_deadline(const std::string& name, double max_seconds, const std::string& memory_note,
                         const std::function<RunOutput()>& compute) {
   int fds[2];
-  if (::pipe(fds) != 0) throw Exit{kAlgorithmFailed, "cannot create a pipe for --max-seconds"};
+  if (::pipe2(fds, O_CLOEXEC) != 0) throw Exit{kAlgorithmFailed, "cannot create a pipe for --max-seconds"};
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                                                std::chrono::duration<double>(max_seconds));
   const pid_t parent = ::getpid();

@@ -8,6 +8,7 @@
 // The GIL is released while a call computes, which runs on a thread with a large stack (as the command
 // line's body does: some peers recurse once per vertex). Bad input raises ValueError with the CLI's
 // one-line message; a failed run (exit status 4 in the CLI) raises RuntimeError.
+#include "core/coordinate.h"
 #include "core/decomposition.h"
 #include "core/io.h"
 #include "core/polygon.h"
@@ -106,7 +107,7 @@ std::vector<Polygon> checked_parts(const std::vector<std::vector<py::bytes>>& pa
 
 const Algorithm& algorithm_named(const std::string& name) {
   const Algorithm* algo = find_algorithm(name);
-  if (!algo) throw py::value_error("unknown algorithm '" + name + "'; polydecomp.algorithms() names them");
+  if (!algo) throw py::value_error("unknown algorithm " + quoted_input(name) + "; 'polydecomp list' names them");
   return *algo;
 }
 

@@ -44,7 +44,8 @@ def generate(family, n, reflex=None, seed=1, holes=None, collinear=None):
                            _optional_count(holes, "holes"), _optional_count(collinear, "collinear"),
                            _count(seed, "seed"))
     arrays = [np.frombuffer(ring, dtype=np.float64).reshape(-1, 2).copy() for ring in rings]
-    return arrays[0] if len(arrays) == 1 else arrays
+    with_holes = any(f["name"] == family and f["holes"] for f in families())
+    return arrays if with_holes else arrays[0]
 
 
 class Decomposition:
@@ -116,23 +117,32 @@ def _fraction(coordinate):
 
 
 def _rational_text(value):
-    if isinstance(value, bool) or not isinstance(value, (Real, Fraction)):
-        raise ValueError(f"a Steiner coordinate is a number, not {value!r}")
-    if isinstance(value, float) and not np.isfinite(value):
+    exact = _exact_value(value, "a Steiner coordinate")
+    if exact is None:
         raise ValueError(f"a Steiner coordinate is finite, not {value!r}")
-    exact = Fraction(value)
     return str(exact.numerator), str(exact.denominator)
 
 
+def _exact_value(value, what):
+    """The exact rational a real number is (numpy scalars included), or None for NaN and infinities."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (Real, Fraction, np.integer, np.floating)):
+        raise ValueError(f"{what} is a number, not {value!r}")
+    if isinstance(value, np.integer):
+        return Fraction(int(value))
+    if isinstance(value, (float, np.floating)):
+        return Fraction(*value.as_integer_ratio()) if np.isfinite(value) else None
+    return Fraction(value)
+
+
 def _index(value):
-    if isinstance(value, bool) or not isinstance(value, Integral):
+    if isinstance(value, bool) or not isinstance(value, (Integral, np.integer)) or not -2**63 <= value < 2**63:
         raise ValueError(f"a piece lists point indices (integers), not {value!r}")
     return int(value)
 
 
 def _count(value, name):
-    if isinstance(value, bool) or not isinstance(value, Integral) or value < 0:
-        raise ValueError(f"{name} takes a non-negative integer, not {value!r}")
+    if isinstance(value, bool) or not isinstance(value, (Integral, np.integer)) or not 0 <= value < 2**64:
+        raise ValueError(f"{name} takes an integer from 0 to 2^64 - 1, not {value!r}")
     return int(value)
 
 
@@ -172,7 +182,11 @@ def _array_of_doubles(array):
     if array.ndim != 2 or array.shape[1] != 2:
         raise ValueError(f"a ring is an array of (x, y) pairs; this one has shape {array.shape}")
     if array.dtype.kind == "f":
-        return array
+        as_double = array.astype(np.float64)
+        inexact = np.nonzero((as_double.astype(array.dtype) != array).any(axis=1))[0]
+        if inexact.size:  # a long double no double equals
+            raise ValueError(f"vertex {inexact[0]}: {array[inexact[0]].tolist()} is not exactly a pair of doubles")
+        return as_double
     if array.dtype.kind in "iu":
         as_double = array.astype(np.float64)
         inexact = np.nonzero((as_double.astype(array.dtype) != array).any(axis=1))[0]
@@ -196,12 +210,13 @@ def _exact_double(value):
     """A coordinate as the double it is exactly; a number no double equals is refused, not rounded."""
     if type(value) is float:
         return value
-    if isinstance(value, bool) or not isinstance(value, Real):
-        raise ValueError(f"a coordinate is a number, not {value!r}")
+    exact = _exact_value(value, "a coordinate")
+    if exact is None:
+        return float(value)  # NaN or an infinity: the checked constructor names it
     try:
-        double = float(value)
+        double = float(exact)
     except OverflowError:
         raise ValueError(f"coordinate {value!r} is too large for a double") from None
-    if np.isfinite(double) and Fraction(double) != Fraction(value):
+    if Fraction(double) != exact:
         raise ValueError(f"coordinate {value!r} is not exactly a double")
     return double

@@ -111,7 +111,7 @@ def test_generate_takes_the_clis_options():
         polydecomp.generate("comb", 10, reflex=9)
     with pytest.raises(ValueError, match="unknown family"):
         polydecomp.generate("no-such-family", 10)
-    with pytest.raises(ValueError, match="non-negative integer"):
+    with pytest.raises(ValueError, match="0 to 2\\^64"):
         polydecomp.generate("comb", -3)
 
 
@@ -251,3 +251,61 @@ print(len(polydecomp.decompose({COMB}, "any-fan", max_seconds=30).pieces))
     assert lines[1] + "\n" == done.stderr
     assert lines[2] == "sleeper stopped after 0.5 s (--max-seconds)"
     assert lines[3] == str(len(COMB) - 2)
+
+
+def test_plug_ins_from_several_threads_and_a_deadline_beside_them(tmp_path):
+    write_plugin(tmp_path, "garbage", "    print('not json', flush=True)\n")
+    fan = "    print(json.dumps({'pieces': [[0, i, i + 1] for i in range(1, n - 1)], 'steiner': []}), flush=True)\n"
+    write_plugin(tmp_path, "slow-fan", "    time.sleep(1.5)\n" + fan)
+    code = f"""
+import threading, time
+from concurrent.futures import ThreadPoolExecutor
+import polydecomp
+
+def garbage(_):
+    try:
+        polydecomp.decompose({COMB}, "garbage")
+    except RuntimeError as e:
+        return str(e)
+
+with ThreadPoolExecutor(4) as pool:
+    errors = set(pool.map(garbage, range(40)))
+print(len(errors))
+print(errors.pop())
+holder = threading.Thread(target=lambda: polydecomp.decompose({COMB}, "slow-fan"))
+holder.start()
+time.sleep(0.3)  # the holder's call now holds slow-fan's turn, in this process
+start = time.time()
+result = polydecomp.decompose({COMB}, "slow-fan", max_seconds=30)  # the child starts its own slow-fan
+print(len(result.pieces), time.time() - start < 15)
+holder.join()
+"""
+    printed = in_fresh_python(code, tmp_path)
+    assert printed.returncode == 0, printed.stderr
+    lines = printed.stdout.splitlines()
+    assert lines[0] == "1", lines  # every call fails the same way: none sees another's half-stopped command
+    assert "garbage" in lines[1] and "not JSON" in lines[1], lines[1]
+    assert lines[2] == f"{len(COMB) - 2} True"
+
+
+def test_numbers_of_every_numpy_type_are_read_exactly_or_refused():
+    ring = np.array(COMB, dtype=np.float32)
+    assert polydecomp.decompose(ring, "monotone").points[:len(COMB)] == [(x, y) for x, y in COMB]
+    precise = np.array(COMB, dtype=np.longdouble)
+    precise[1, 0] += np.longdouble(2) ** -60
+    with pytest.raises(ValueError, match="not exactly a pair of doubles"):
+        polydecomp.decompose(precise, "monotone")
+    scalars = [(np.int64(x), np.float32(y)) for x, y in COMB]
+    assert len(polydecomp.decompose(scalars, "monotone").pieces) == len(COMB) - 2
+    with pytest.raises(ValueError, match="not exactly a double"):
+        polydecomp.decompose([(np.longdouble(1) + np.longdouble(2) ** -60, 0), (2, 0), (0, 1)], "monotone")
+    hm = polydecomp.decompose(COMB, "hertel-mehlhorn")
+    assert polydecomp.validate(COMB, hm.pieces, "convex", [(np.float32(0.5), np.int16(1))]).valid  # unused
+    with pytest.raises(ValueError, match="0 to 2\\^64"):
+        polydecomp.generate("comb", 2**64)
+    with pytest.raises(ValueError, match="point indices"):
+        polydecomp.validate(COMB, [[0, 1, 2**70]], "convex")
+    assert isinstance(polydecomp.generate("convex-holes", 60, holes=0), list)
+    with pytest.raises(ValueError) as unknown:
+        polydecomp.decompose(COMB, "comb\n")
+    assert str(unknown.value) + "\n" == cli("run", "--algorithm", "comb\n", "--input", "-").stderr[len("error: "):]
