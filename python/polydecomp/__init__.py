@@ -65,8 +65,7 @@ class Decomposition:
         self.reflex = report["reflex"]
         self.holes = report.get("holes", 0)
         self.points = [(_fraction(x), _fraction(y)) for x, y in report["points"]]
-        self.points_float = np.array([[float(x), float(y)] for x, y in self.points], dtype=np.float64)
-        self.points_float = self.points_float.reshape(-1, 2)
+        self.points_float = np.array([[float(x), float(y)] for x, y in self.points], dtype=np.float64).reshape(-1, 2)
         self.pieces = report["pieces"]
         self.steiner_count = report["steiner_count"]
         self.valid = report.get("valid")
