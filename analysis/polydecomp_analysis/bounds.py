@@ -513,22 +513,30 @@ def _date_range(text):
     return dates[0] if len(dates) == 1 else "{} to {}".format(dates[0], dates[-1])
 
 
-def render(context, registry, times, ops, pieces, runs, source, refused=()):
+Summary = collections.namedtuple("Summary", "name worst_time worst_ratio verdict")
+
+
+def summaries(times, pieces):
+    """Per algorithm, as bounds.md's summary table: its worst family's time fit ("fit (family)" or "-"),
+    its worst piece ratio to the best ("-" when none) and the summary verdict."""
     by_algorithm = collections.defaultdict(list)
     for row in times:
         by_algorithm[row.algorithm].append(row)
     piece_by_algorithm = {p.algorithm: p for p in pieces}
-    summary = []
+    out = []
     for name in sorted(set(by_algorithm) | set(piece_by_algorithm)):
         rows = by_algorithm.get(name, [])
         checked = [row for row in rows if row.checks]  # a corpus's fit is no verdict, so never the worst
         worst = max(checked, key=TimeRow.excess) if checked else None
         p = piece_by_algorithm.get(name)
-        summary.append([name, registry[name]["time_bound"],
-                        "{} ({})".format(worst.fitted_text(), worst.family) if worst and worst.fit else "-",
-                        registry[name]["pieces_bound"],
-                        "{:.3f}".format(p.worst_ratio) if p and p.worst_ratio else "-",
-                        summary_verdict(rows, p)])
+        out.append(Summary(name, "{} ({})".format(worst.fitted_text(), worst.family) if worst and worst.fit else "-",
+                           "{:.3f}".format(p.worst_ratio) if p and p.worst_ratio else "-", summary_verdict(rows, p)))
+    return out
+
+
+def render(context, registry, times, ops, pieces, runs, source, refused=()):
+    summary = [[s.name, registry[s.name]["time_bound"], s.worst_time, registry[s.name]["pieces_bound"], s.worst_ratio,
+                s.verdict] for s in summaries(times, pieces)]
     failed = [r for r in runs if r.status in ("invalid", "failed")]
     parts = [
         "# Claimed bounds against measurements",

@@ -240,21 +240,11 @@ VERDICT_COLUMNS = ["table", "algorithm", "family", "counter", "claimed", "measur
 def summary_rows(registry, times, pieces):
     """One row per algorithm, as bounds.md's summary: its worst family's fit, its worst piece ratio and the
     summary verdict."""
-    by_algorithm = collections.defaultdict(list)
-    for row in times:
-        by_algorithm[row.algorithm].append(row)
-    piece_of = {p.algorithm: p for p in pieces}
     rows = []
-    for name in sorted(set(by_algorithm) | set(piece_of)):
-        mine = by_algorithm.get(name, [])
-        checked = [row for row in mine if row.checks]  # a corpus's fit is no verdict, so never the worst
-        worst = max(checked, key=bounds.TimeRow.excess) if checked else None
-        p = piece_of.get(name)
-        measured = "time: {}; worst piece ratio to best: {}".format(
-            "{} ({})".format(worst.fitted_text(), worst.family) if worst and worst.fit else "-",
-            "{:.3f}".format(p.worst_ratio) if p and p.worst_ratio else "-")
-        rows.append(["summary", name, "", "", "time {}; pieces {}".format(
-            registry[name]["time_bound"], registry[name]["pieces_bound"]), measured, bounds.summary_verdict(mine, p)])
+    for s in bounds.summaries(times, pieces):
+        claims = "time {}; pieces {}".format(registry[s.name]["time_bound"], registry[s.name]["pieces_bound"])
+        measured = "time: {}; worst piece ratio to best: {}".format(s.worst_time, s.worst_ratio)
+        rows.append(["summary", s.name, "", "", claims, measured, s.verdict])
     return rows
 
 
