@@ -20,29 +20,12 @@
 // forward edge (z_i, z_i + 1) and its L_i our backward edge. Because patterns do not interleave, the
 // intervals need not wrap: S(0, r-1) is the answer.
 //
-// Reconstructions (the OCR text is garbled where the candidates are defined and the figures are lost):
-// - A Y-subtree is kept in B(i, j) only when it is "free" (relation 3: the best patterns between its
-//   notches number |S(i, j)|). A free subtree never resolves z_i by itself (it would then be a
-//   pattern, one more than |S(i, j)|), so the angle it leaves at z_i is reflex, and a second branch
-//   there must lie in the cone between the extension of its edge and that of L_i. That cone widens as
-//   the edge turns towards L_i, so among the candidates the one whose edge turns furthest towards L_i
-//   is kept: the thesis's "maximizes u = (t, L_i)" of STEP 4 (Sec. 2.3.6.1 says "minimizes (L_i, t)",
-//   the same angle measured the other way). F mirrors B.
-// - A subtree is represented here by how it was built (B1: the narrower B(i, k); B2: an edge to z_k
-//   and B(k, j); B3: an edge to z_j and F(i+1, j); B4: a Steiner point joining z_i to z_k and z_j with
-//   F(i+1, k) and F(k+1, j)), and its edge at z_i by the point it reaches; the patterns are laid out
-//   from these records once the program is done.
-// - An empty B(i, j) (the thesis's (R(v_i, R_i), 0)) leaves z_i a leaf of the pattern; the count of the
-//   notches beside it then excludes z_i (S(i+1, j) rather than S(i, j)), which the thesis's formulas
-//   leave implicit.
-// - B4's Steiner point (Corollary 14.2) is the point of the feasible region turned furthest around
-//   z_i, which lies on the region's boundary (an edge through a vertex of P, or along a range); it is
-//   moved 1/64 of the way towards the region's average so that its edges are interior. A later patch
-//   that needs the edge turned further than that point is missed: a compromise of exactness against
-//   the thesis's extreme (a symbolic perturbation would remove it); no test has met such a case.
-// - STEP 3's X4 term is left to the variant (x4_term).
+// Reconstructions where the OCR text is garbled and the figures are lost (which Y-subtree B(i, j)
+// keeps, how a subtree is recorded, an empty B(i, j), B4's Steiner point and its 1/64 compromise):
+// docs/algorithms/chazelle-dobkin-patterns.md, "The dynamic program". STEP 3's X4 term is left to
+// the variant (x4_term).
 // Deviation: superranges are replaced by trees of geodesics from each notch over a decomposition by
-// vertical chords (engines/chazelle_dobkin/patterns.h), in the same O(n + r^2 log n) preprocessing.
+// vertical chords (engines/chazelle_dobkin/geodesics.h), in the same O(n + r^2 log n) preprocessing.
 //
 // Time, apart from x4_term: that preprocessing; the joint of each of the O(r^2) stored subtrees is
 // built once; then O(r^3) pattern tests (STEPs 2 and 4: O(r) per interval), each O(1) (Theorems 13
