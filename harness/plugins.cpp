@@ -122,9 +122,10 @@ class ManifestReader {
 // The thread that forks the commands. A child's parent-death signal fires when the thread that forked
 // it ends, not the process; the commands are forked from this one thread, which lives as long as its
 // process, so that a command outlives the call that started it (the Python module runs each call on a
-// thread of its own) and still dies with polydecomp. It is made when the plug-ins are registered,
-// before any other thread runs, and again, unlocked, by a forked copy of polydecomp (`run
-// --max-seconds`'s child), which has one thread.
+// thread of its own) and still dies with polydecomp. Only a host whose calls come from threads that
+// end uses it (use_plugin_launcher: the Python module, which makes it at import, before other threads
+// run); a forked copy of the host (max_seconds's child, one thread) makes its own, unlocked. The
+// command line forks from its run thread, which lives as long as it does.
 class Launcher {
  public:
   static Launcher& of_this_process() {
@@ -145,10 +146,18 @@ class Launcher {
   }
 
  private:
-  Launcher() : owner_(::getpid()) { std::thread([this] { serve(); }).detach(); }
+  // Returns once the thread waits for tasks, so that no fork meets it starting up (holding an allocator's
+  // lock that the child would then wait for).
+  Launcher() : owner_(::getpid()) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    std::thread([this] { serve(); }).detach();
+    done_.wait(lock, [&] { return serving_; });
+  }
 
   void serve() {
     std::unique_lock<std::mutex> lock(mutex_);
+    serving_ = true;
+    done_.notify_all();
     for (;;) {
       ready_.wait(lock, [&] { return task_ != nullptr; });
       (*task_)();
@@ -163,7 +172,10 @@ class Launcher {
   std::condition_variable ready_, done_;
   const std::function<void()>* task_ = nullptr;
   bool* finished_ = nullptr;
+  bool serving_ = false;
 };
+
+bool launcher_in_use = false;
 
 // One running command: a line written, a line read.
 class PluginProcess {
@@ -214,7 +226,7 @@ class PluginProcess {
     if (::pipe2(in, O_CLOEXEC) != 0 || ::pipe2(out, O_CLOEXEC) != 0 || ::pipe2(status, O_CLOEXEC) != 0)
       throw std::runtime_error(name_ + ": cannot create pipes");
     pid_t pid = -1;
-    Launcher::of_this_process().run([&] {
+    const std::function<void()> fork_command = [&] {
       pid = ::fork();
       if (pid == 0) {
         ::close(in[1]);
@@ -222,7 +234,9 @@ class PluginProcess {
         ::close(status[0]);
         start_child(argv_, folder_, in[0], out[1], status[1]);
       }
-    });
+    };
+    if (launcher_in_use) Launcher::of_this_process().run(fork_command);
+    else fork_command();
     if (pid < 0) throw std::runtime_error(name_ + ": cannot fork");
     ::close(in[0]);
     ::close(out[1]);
@@ -409,6 +423,11 @@ std::vector<std::string> plugin_folders(const std::vector<std::string>& given) {
   return folders;
 }
 
+void use_plugin_launcher() {
+  launcher_in_use = true;
+  Launcher::of_this_process();
+}
+
 void register_plugins(const std::vector<std::string>& folders) {
   for (const std::string& folder : folders) {
     std::error_code error;
@@ -420,7 +439,6 @@ void register_plugins(const std::vector<std::string>& folders) {
     for (const auto& entry : fs::directory_iterator(folder))
       if (entry.path().extension() == ".json") manifests.push_back(entry.path());
     std::sort(manifests.begin(), manifests.end());
-    if (!manifests.empty()) Launcher::of_this_process();  // now, while one thread runs
     for (const fs::path& path : manifests) {
       Algorithm a = algorithm_of(path);
       if (find_algorithm(a.name)) throw PluginError(path.string() + ": an algorithm named " + a.name + " exists already");

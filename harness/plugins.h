@@ -35,4 +35,9 @@ std::vector<std::string> plugin_folders(const std::vector<std::string>& given);
 // folder other than the project's peers/ is an error.
 void register_plugins(const std::vector<std::string>& folders);
 
+// From now on the commands are forked from one long-lived thread (plugins.cpp, Launcher), not from the
+// calling thread, whose end would take them with it. For a host whose calls come from threads that end
+// (the Python module); call it once, before other threads run.
+void use_plugin_launcher();
+
 }  // namespace pd

@@ -145,14 +145,16 @@ bool read_until(int fd, std::chrono::steady_clock::time_point deadline, std::str
   }
 }
 
-[[noreturn]] void run_child(int parent, int fd, const std::string& name, const std::string& memory_note,
+[[noreturn]] void run_child(int parent, int fd, const std::string& name, const RunOptions& options,
                             const std::function<RunOutput()>& compute) {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (::getppid() != parent) ::_exit(0);  // the parent died before the line above
   // Another thread's pipes (another call's deadline, a plug-in's) must not stay open here: their
   // readers wait for the end of file that only their own writer's exit gives.
-  if (fd > 3) ::close_range(3, static_cast<unsigned>(fd) - 1, 0);
-  ::close_range(static_cast<unsigned>(fd) + 1, ~0U, 0);
+  if (options.close_inherited) {
+    if (fd > 3) ::close_range(3, static_cast<unsigned>(fd) - 1, 0);
+    ::close_range(static_cast<unsigned>(fd) + 1, ~0U, 0);
+  }
   send_last_resort_reports_to(fd);
   std::string message;
   try {
@@ -160,7 +162,7 @@ bool read_until(int fd, std::chrono::steady_clock::time_point deadline, std::str
   } catch (const Exit& e) {
     message = encode(e);
   } catch (const std::bad_alloc&) {
-    message = encode(Exit{kAlgorithmFailed, name + " ran out of memory" + memory_note});
+    message = encode(Exit{kAlgorithmFailed, name + " ran out of memory" + options.memory_note});
   } catch (const std::exception& e) {
     message = encode(Exit{kAlgorithmFailed, name + " failed: " + e.what()});
   }
@@ -168,7 +170,7 @@ bool read_until(int fd, std::chrono::steady_clock::time_point deadline, std::str
   ::_exit(0);
 }
 
-RunOutput with_deadline(const std::string& name, double max_seconds, const std::string& memory_note,
+RunOutput with_deadline(const std::string& name, double max_seconds, const RunOptions& options,
                         const std::function<RunOutput()>& compute) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) throw Exit{kAlgorithmFailed, "cannot create a pipe for --max-seconds"};
@@ -179,7 +181,7 @@ RunOutput with_deadline(const std::string& name, double max_seconds, const std::
   if (child < 0) throw Exit{kAlgorithmFailed, "cannot fork for --max-seconds"};
   if (child == 0) {
     ::close(fds[0]);
-    run_child(parent, fds[1], name, memory_note, compute);
+    run_child(parent, fds[1], name, options, compute);
   }
   ::close(fds[1]);
   std::string message;
@@ -205,7 +207,7 @@ void check_accepted(const Algorithm& algo, const std::vector<Polygon>& parts) {
 
 RunOutput run_algorithm(const Algorithm& algo, const std::vector<Polygon>& parts, const RunOptions& options) {
   const auto compute = [&] { return run_here(algo, parts, options); };
-  return options.max_seconds ? with_deadline(algo.name, *options.max_seconds, options.memory_note, compute) : compute();
+  return options.max_seconds ? with_deadline(algo.name, *options.max_seconds, options, compute) : compute();
 }
 
 std::string count_text(const char* name, std::size_t value, bool shown) {

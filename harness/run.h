@@ -29,6 +29,9 @@ struct RunOptions {
   bool svg = false;                   // draw the figure
   std::optional<double> max_seconds;  // run in a child process, stopped after this many seconds
   std::string memory_note;            // what an out-of-memory message adds, e.g. " (--max-memory 2G)"
+  // The deadline's child closes every descriptor but its own: in a host with threads (the Python
+  // module), another call's pipes must not stay open in it.
+  bool close_inherited = false;
 };
 
 // The report on stdout, the SVG figure (empty without RunOptions::svg), and why the result is not valid

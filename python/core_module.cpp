@@ -133,6 +133,7 @@ std::pair<std::string, std::string> decompose(const std::vector<std::vector<py::
   options.json = true;
   options.validate = validate;
   options.max_seconds = max_seconds;
+  options.close_inherited = true;
   const RunOutput output = raising([&] {
     check_accepted(algo, polygons);
     return computed([&] { return run_algorithm(algo, polygons, options); });
@@ -202,6 +203,7 @@ py::list families() {
 PYBIND11_MODULE(_core, m) {
   m.doc() = "polydecomp's compiled core; use the polydecomp package, not this module";
   pd::register_plugins(pd::plugin_folders({}));
+  pd::use_plugin_launcher();
   m.def("algorithms_json", &pd::algorithms_json);
   m.def("families", &pd::bindings::families);
   m.def("generate", &pd::bindings::generate);
