@@ -30,11 +30,13 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # The JavaScript peers' packages, at the versions peers/npm/package-lock.json pins, into
-# peers/npm/node_modules (not committed): again when it is missing or older than the lock file.
+# peers/npm/node_modules (not committed): again when its stamp, written once `npm ci` has succeeded, is
+# missing or older than the lock file (an interrupted `npm ci` leaves a folder, not the stamp).
 npm_dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/peers/npm"
-if [ ! -d "$npm_dir/node_modules" ] || [ "$npm_dir/package-lock.json" -nt "$npm_dir/node_modules" ]; then
+stamp="$npm_dir/node_modules/.installed"
+if [ ! -f "$stamp" ] || [ "$npm_dir/package-lock.json" -nt "$stamp" ]; then
   command -v npm >/dev/null || { echo "error: npm is missing; it installs the JavaScript peers in $npm_dir (Debian: apt-get install npm)" >&2; exit 1; }
   echo "deps: npm ci in $npm_dir" >&2
   (cd "$npm_dir" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
-  touch "$npm_dir/node_modules"
+  touch "$stamp"
 fi
