@@ -8,7 +8,10 @@
   - an unknown sweep or family is refused as such (exit 2), without the advice to resume;
   - a user's folder of polygon files, named in a sweeps file of their own (--sweep-file) as
     "dir:PATH", runs every algorithm on each file it accepts, each result validated, and lists the
-    files it refuses once, with the reason.
+    files it refuses once, with the reason;
+  - the report of a sweep draws every key of up to drawings.DRAW_MAX_N vertices that ran, with its pieces,
+    and gives the commands that make each polygon again (the page stays in DIR/report-drawn/ for the
+    browser test).
 
 usage: integration_sweep.py --build DIR
 """
@@ -17,6 +20,8 @@ import argparse
 import collections
 import json
 import os
+import re
+import shlex
 import shutil
 import signal
 import subprocess
@@ -25,7 +30,7 @@ import tempfile
 import time
 import unittest
 
-from polydecomp_analysis import results
+from polydecomp_analysis import bounds, drawings, report, results
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -214,6 +219,52 @@ class SweepIntegration(unittest.TestCase):
         _, runs = results.load(os.path.join(workdir, "results", "mine.json"))
         self.assertEqual({(run.family, run.file) for run in runs},
                          {("my polygons", "comb.txt"), ("my polygons", "holes.wkt")})
+
+    def test_a_report_draws_every_small_key_as_it_ran(self):
+        workdir = self.workdir("drawn")
+        folder = os.path.join(workdir, "my polygons")
+        os.makedirs(folder)
+        polydecomp = os.path.join(BUILD, "polydecomp")
+        subprocess.run([polydecomp, "generate", "--family", "convex-holes", "--n", "40", "--holes", "2", "--format",
+                        "wkt", "-o", os.path.join(folder, "holes.wkt")], check=True)
+        own = os.path.join(workdir, "drawn.json")
+        with open(own, "w", encoding="utf-8") as f:
+            json.dump({"drawn": dict(TINY_SWEEPS["tiny"], algorithms=["monotone", "hertel-mehlhorn", "keil"], curves=[
+                {"vs": "n", "families": ["random", "star"], "r": ["default"], "n": [20, 160]},
+                {"vs": "r", "families": ["comb"], "n": [64], "r": [4, 16]},
+                {"vs": "n", "families": ["comb-holes"], "r": ["default"], "h": [2], "n": [40]},
+                {"vs": "n", "families": ["dir:my polygons"]}])}, f)
+        command = [sys.executable, os.path.join(HERE, "sweep.py"), "--sweep", "drawn", "--sweep-file", own,
+                   "--build", BUILD, "--results", os.path.join(workdir, "results"), "--no-analysis"]
+        done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        results_file = os.path.join(workdir, "results", "drawn.json")
+        page = os.path.join(BUILD, "report-drawn", "index.html")
+        report.write_report(results_file, bounds.load_registry(polydecomp), page, polydecomp=polydecomp)
+        with open(page, encoding="utf-8") as f:
+            table = json.loads(re.search(r'<script type="application/json" id="pd-keys-data">(.*?)</script>',
+                                         f.read()).group(1))
+        _, runs = results.load(results_file)
+        by_name = {run.name: run for run in runs}
+        self.assertEqual(table["notes"], [])
+        for row in table["rows"]:
+            run = by_name[table["algorithms"][row[0]] + "/" + table["polygons"][row[1]]]
+            if not (run.timed and run.n <= drawings.DRAW_MAX_N):
+                self.assertIsNone(row[7], run.name)
+                continue
+            shape, steiner, pieces = table["drawings"][row[7]]
+            self.assertEqual(len(table["shapes"][shape]), 2 * run.n, run.name)
+            self.assertEqual(len(drawings.decode_pieces(pieces)), run.pieces, run.name)
+            self.assertEqual(steiner, [], run.name)
+        sources = {table["polygons"][row[1]]: table["sources"][row[1]] for row in table["rows"]}
+        self.assertEqual(sources["my polygons/holes.wkt/n:40/r:20/h:2"],
+                         ["", shlex.quote(os.path.join(folder, "holes.wkt"))])
+        self.assertEqual(sources["comb/n:64/r:16/seed:1"][0], "polydecomp generate --family comb --n 64 --reflex 16 "
+                                                              "--seed 1 --format wkt -o polygon.wkt")
+        star = next(polygon for polygon in sources if polygon.startswith("star/n:20/"))
+        self.assertNotIn("--reflex", sources[star][0])  # r is an outcome of the family
+        drawn = sum(1 for row in table["rows"] if row[7] is not None)
+        self.assertGreater(drawn, 20)
 
     @staticmethod
     def _finished(journal):

@@ -5,7 +5,11 @@ What the page holds: polydecomp_analysis/report.py. A sweep (analysis/sweep.py, 
 writes its report itself; this command writes it again, or from other files.
 
 usage: report.py (--results DIR --sweep NAME | RESULTS.json) [--out FILE]
-                 [--polydecomp build/polydecomp | --registry LIST.json] [--plugins DIR]...
+                 [--polydecomp build/polydecomp] [--registry LIST.json] [--no-drawings] [--plugins DIR]...
+
+The keys of up to drawings.DRAW_MAX_N vertices are drawn by running --polydecomp again on each (a few
+minutes for the reference run's 15,000); --no-drawings leaves them out, and so does a page written with
+--registry and no --polydecomp.
 """
 
 import argparse
@@ -21,8 +25,10 @@ def main(argv=None):
     parser.add_argument("--results", metavar="DIR", help="with --sweep: the results folder of DIR/NAME.json")
     parser.add_argument("--sweep", metavar="NAME", help="with --results: the sweep, e.g. quick or paper")
     parser.add_argument("--out", help="the page (default: index.html beside the results file)")
-    parser.add_argument("--polydecomp", default="build/polydecomp", help="the command line, for the claims")
+    parser.add_argument("--polydecomp", help="the command line, for the claims and the drawings "
+                        "(default: build/polydecomp)")
     parser.add_argument("--registry", help="a saved `polydecomp list --json` output, instead of running it")
+    parser.add_argument("--no-drawings", action="store_true", help="draw no key's decomposition")
     plugins.add_plugins_argument(parser)
     args = parser.parse_args(argv)
     if bool(args.results) != bool(args.sweep) or bool(args.results_file) == bool(args.results):
@@ -31,8 +37,10 @@ def main(argv=None):
     out = args.out or os.path.join(os.path.dirname(results_file), "index.html")
     plugins.use_plugins(args.plugins)
     try:
-        registry = bounds.load_registry(args.polydecomp, args.registry)
-        size = report.write_report(results_file, registry, out)
+        registry = bounds.load_registry(args.polydecomp or "build/polydecomp", args.registry)
+        draw_with = None if args.no_drawings or (args.registry and not args.polydecomp) else (
+            args.polydecomp or "build/polydecomp")
+        size = report.write_report(results_file, registry, out, polydecomp=draw_with)
     except (OSError, ValueError) as e:
         print("error: " + str(e), file=sys.stderr)
         return 1

@@ -10,7 +10,9 @@ comparison of two results files (analysis/compare.py). A report is one file that
               one table filtered by a text box
   pieces      each algorithm's pieces over the best valid count of its rules on the same polygon, per family
   keys        the gallery figure (plots/gallery.png, linked, not inlined) and every key's status, pieces,
-              time and counters, searched by a text box
+              time and counters, searched by a text box; a key clicked (or named in the address, #key=NAME)
+              shows its decomposition drawn (drawings.py: the keys of up to DRAW_MAX_N vertices) and the
+              commands that draw it with `polydecomp run --svg`
 
 plotly.js is the Debian package's (python3-plotly), inline. That copy is not minified: it is 8.7 MB of
 the page, so the data is kept compact (numbers rounded to DIGITS, names interned, the keys' rows built
@@ -29,7 +31,7 @@ import statistics
 import matplotlib.colors
 import plotly.offline
 
-from . import bound_expr, bounds, fit, plots, results
+from . import bound_expr, bounds, drawings, fit, plots, results
 
 MIN_POINTS = 3  # as in the figures: fewer points show no trend
 DIGITS = 4  # significant digits of the times in the page (one call's time jitters more than that)
@@ -330,13 +332,18 @@ def _number(value):
     return int(value) if float(value).is_integer() else rounded(value)
 
 
-def key_table(runs):
+def key_table(runs, drawn=None, corpora=None):
     """Every key as compact JSON for the page's script to search: the key's algorithm and polygon (the rest of
     its name, shared by all algorithms), status and reason as indices into lists of their distinct values,
     pieces, seconds (DIGITS digits) and counters as values in the order of the algorithm's own list of counter
     names. {"algorithms", "polygons", "statuses", "reasons", "counters": {algorithm: [names]}, "rows": [[
-    algorithm, polygon, status, reason, pieces, seconds, [counter values]]]}: a third the size of plain rows."""
-    lists = {"algorithms": {}, "polygons": {}, "statuses": {}, "reasons": {}}
+    algorithm, polygon, status, reason, pieces, seconds, [counter values], drawing]]}: a third the size of plain
+    rows. drawn ({name: drawing or why not}, drawings.draw's) adds the drawings: "shapes" (each polygon's
+    vertices, once), "drawings" ([shape, Steiner points, pieces]), "notes" (why a key is not drawn); a row's
+    drawing is an index into "drawings", or -1 - an index into "notes", or None. "sources" (per polygon, the
+    command that makes it and the file it is read from) lets the page show the commands that draw any key."""
+    drawn = drawn or {}
+    lists = {kind: {} for kind in ("algorithms", "polygons", "statuses", "reasons", "shapes", "notes")}
 
     def index(kind, value):
         return lists[kind].setdefault(value, len(lists[kind]))
@@ -345,17 +352,31 @@ def key_table(runs):
     for run in runs:
         counters[run.algorithm].update(run.ops)
     counters = {name: sorted(names) for name, names in counters.items()}
-    rows = []
+    rows, pictures, sources = [], [], {}
     for run in runs:
         polygon = run.name[len(run.algorithm) + 1:]
+        sources.setdefault(polygon, drawings.polygon_source(run, corpora or {}))
         rows.append([index("algorithms", run.algorithm), index("polygons", polygon), index("statuses", run.status),
                      index("reasons", run.reason), run.pieces, rounded(run.seconds) if run.timed else None,
                      [_number(run.ops[c]) if c in run.ops else None for c in counters[run.algorithm]]
-                     if run.ops else []])
+                     if run.ops else [], picture(drawn.get(run.name), pictures, index)])
     table = {kind: list(values) for kind, values in lists.items()}
+    table["shapes"] = [list(shape) for shape in table["shapes"]]
     table["counters"] = {name: counters.get(name, []) for name in table["algorithms"]}
+    table["sources"] = [sources[polygon] for polygon in table["polygons"]]
+    table["drawings"] = pictures
     table["rows"] = rows
     return table
+
+
+def picture(drawing, pictures, index):
+    """A key row's drawing field (key_table's): appends the drawing to `pictures`, its polygon to the shapes."""
+    if drawing is None:
+        return None
+    if isinstance(drawing, str):
+        return -1 - index("notes", drawing)
+    pictures.append([index("shapes", tuple(drawing["vertices"])), drawing["steiner"], drawing["pieces"]])
+    return len(pictures) - 1
 
 
 # --- comparing two results files ---------------------------------------------------------------------------
@@ -451,6 +472,10 @@ th{background:#f3f3f3;position:sticky;top:0}tr.bad td{background:#fde2e2}tr.note
 input.filter{font-size:14px;padding:4px;width:28em;margin:.4em 0}.count{color:#666;margin-left:1em}
 .muted{color:#666}nav a{margin-right:1em}td.num{text-align:right;white-space:nowrap}
 #pd-keys td:first-child,#pd-compare td:first-child{white-space:nowrap}figure img{max-width:100%;width:1200px}
+#pd-keys tbody tr{cursor:pointer}#pd-keys tbody tr:hover td{background:#eef4ff}
+#pd-drawing svg{width:640px;max-width:100%;max-height:640px;border:1px solid #eee}
+#pd-drawing .piece{stroke:#555;stroke-width:1}#pd-drawing .boundary{stroke:#000;stroke-width:2.5;fill:none}
+#pd-drawing .steiner{fill:#d00}
 """
 
 # The page's own script: the plots drawn from the figures' JSON, a text box filtering the rows of a table,
@@ -497,7 +522,8 @@ SCRIPT = """
       return [r[0], time(r[1]), time(r[2]), (r[2] / r[1]).toFixed(4), ((r[2] - r[1]) / r[1] * 100).toFixed(1) + "%"];
     });
   }
-  function searchable(tableId, rows) {
+  function esc(text) { return text.replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/"/g, "&quot;"); }
+  function searchable(tableId, rows, onPick) {
     var table = document.getElementById(tableId), body = table.querySelector("tbody");
     var box = document.getElementById(tableId + "-search"), count = document.getElementById(tableId + "-count");
     var texts = null, numeric = JSON.parse(table.dataset.numeric);
@@ -508,9 +534,8 @@ SCRIPT = """
       for (var i = 0; i < rows.length; i++) {
         if (terms.length && !terms.every(function (w) { return texts[i].indexOf(w) >= 0; })) continue;
         if (++matches > KEYS_SHOWN) continue;
-        html.push("<tr>" + rows[i].map(function (c, j) {
-          var td = numeric.indexOf(j) >= 0 ? "<td class=num>" : "<td>";
-          return td + c.replace(/&/g, "&amp;").replace(/</g, "&lt;") + "</td>";
+        html.push("<tr data-i=" + i + ">" + rows[i].map(function (c, j) {
+          return (numeric.indexOf(j) >= 0 ? "<td class=num>" : "<td>") + esc(c) + "</td>";
         }).join("") + "</tr>");
       }
       body.innerHTML = html.join("");
@@ -518,12 +543,90 @@ SCRIPT = """
         (matches > KEYS_SHOWN ? "; the first KEYS_SHOWN shown" : "");
     }
     box.addEventListener("input", apply); apply();
+    if (onPick) body.addEventListener("click", function (event) {
+      var row = event.target.closest("tr"); if (row) onPick(Number(row.dataset.i));
+    });
+  }
+  function decodePieces(text) {
+    var base = ALPHABET.length, pieces = [], at = 0;
+    function next() {
+      var c = text[at++];
+      if (c !== ESCAPE) return ALPHABET.indexOf(c);
+      at += 2; return ALPHABET.indexOf(text[at - 2]) * base + ALPHABET.indexOf(text[at - 1]);
+    }
+    while (at < text.length) {
+      var size = next(), piece = [];
+      for (var k = 0; k < size; k++) piece.push(next());
+      pieces.push(piece);
+    }
+    return pieces;
+  }
+  var COLOURS = ["#fbb4ae", "#b3cde3", "#ccebc5", "#decbe4", "#fed9a6", "#ffffcc", "#e5d8bd", "#fddaec", "#f2f2f2"];
+  function svgOf(t, picture) {
+    // coordinates scaled into a 1000-unit box, y upwards; the boundary is the edges one piece has alone
+    var v = t.shapes[picture[0]].concat(picture[1]), nv = t.shapes[picture[0]].length / 2;
+    var pieces = decodePieces(picture[2]), x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (var i = 0; i < v.length; i += 2) {
+      x0 = Math.min(x0, v[i]); x1 = Math.max(x1, v[i]); y0 = Math.min(y0, v[i + 1]); y1 = Math.max(y1, v[i + 1]);
+    }
+    var scale = 1000 / (Math.max(x1 - x0, y1 - y0) || 1);
+    function at(k) { return ((v[2 * k] - x0) * scale).toFixed(1) + "," + ((y1 - v[2 * k + 1]) * scale).toFixed(1); }
+    var shapes = [], edges = {};
+    pieces.forEach(function (piece, p) {
+      shapes.push('<polygon class="piece" fill="' + COLOURS[p % COLOURS.length] + '" points="' +
+                  piece.map(at).join(" ") + '"/>');
+      piece.forEach(function (a, k) {
+        var b = piece[(k + 1) % piece.length], edge = Math.min(a, b) + " " + Math.max(a, b);
+        edges[edge] = (edges[edge] || 0) + 1;
+      });
+    });
+    Object.keys(edges).forEach(function (edge) {
+      if (edges[edge] === 1) {
+        shapes.push('<polyline class="boundary" points="' + edge.split(" ").map(Number).map(at).join(" ") + '"/>');
+      }
+    });
+    for (var s = nv; s < v.length / 2; s++) {
+      var xy = at(s).split(",");
+      shapes.push('<circle class="steiner" r="5" cx="' + xy[0] + '" cy="' + xy[1] + '"/>');
+    }
+    var w = Math.ceil((x1 - x0) * scale), h = Math.ceil((y1 - y0) * scale);
+    return '<svg xmlns="http://www.w3.org/2000/svg" viewBox="-10 -10 ' + (w + 20) + " " + (h + 20) + '">' +
+           shapes.join("") + "</svg>";
+  }
+  function quoted(word) { return /^[A-Za-z0-9_.\\/:=-]+$/.test(word) ? word : "'" + word + "'"; }
+  function showKey(t, i) {
+    var r = t.rows[i], algorithm = t.algorithms[r[0]], name = algorithm + "/" + t.polygons[r[1]];
+    var source = t.sources[r[1]], picture = r[7];
+    var commands = (source[0] ? source[0] + " && " : "") + "polydecomp run --algorithm " + quoted(algorithm) +
+                   " --input " + source[1] + " --svg " + quoted(algorithm + ".svg");
+    var body = picture === null ? "<p class=muted>Not drawn: a skipped or failed run, or over " + DRAW_MAX_N +
+               " vertices.</p>" : picture < 0 ? "<p class=muted>" + esc(t.notes[-1 - picture]) + "</p>" :
+               svgOf(t, t.drawings[picture]);
+    document.getElementById("pd-drawing").innerHTML = "<h3>" + esc(name) + "</h3><p>" + esc(t.statuses[r[2]]) +
+      (r[4] === null ? "" : ", " + r[4] + " pieces") + (t.reasons[r[3]] ? ": " + esc(t.reasons[r[3]]) : "") +
+      "</p>" + body + "<p>Draw it: <code>" + esc(commands) +
+      "</code></p>";
   }
   var keys = data("pd-keys-data"), compared = data("pd-compare-data");
-  if (keys) searchable("pd-keys", keyRows(keys));
+  if (keys) {
+    var names = keys.rows.map(function (r) { return keys.algorithms[r[0]] + "/" + keys.polygons[r[1]]; });
+    var pick = function (i) {
+      showKey(keys, i);
+      try { history.replaceState(null, "", "#key=" + encodeURIComponent(names[i])); } catch (e) { /* file: */ }
+    };
+    searchable("pd-keys", keyRows(keys), pick);
+    var wanted = location.hash.indexOf("#key=") === 0 ? names.indexOf(decodeURIComponent(location.hash.slice(5))) : -1;
+    if (wanted >= 0) {
+      showKey(keys, wanted); document.getElementById("pd-drawing").scrollIntoView();
+    } else {
+      wanted = keys.rows.findIndex(function (r) { return r[7] !== null && r[7] >= 0; });
+      if (wanted >= 0) showKey(keys, wanted);
+    }
+  }
   if (compared) searchable("pd-compare", compareRows(compared));
 })();
-""".replace("KEYS_SHOWN", str(KEYS_SHOWN))
+""".replace("KEYS_SHOWN", str(KEYS_SHOWN)).replace("DRAW_MAX_N", str(drawings.DRAW_MAX_N)).replace(
+    "ALPHABET", json.dumps(drawings.ALPHABET)).replace("ESCAPE", json.dumps(drawings.ESCAPE))
 
 
 def e(text):
@@ -634,13 +737,20 @@ def keys_section(gallery_link, table):
                'class="muted">One polygon decomposed by every algorithm (plots/gallery.png of analysis/plots.py).'
                '</figcaption></figure>'.format(e(gallery_link))
                if gallery_link else '<p class="muted">No gallery figure (plots/gallery.png) beside these results.</p>')
+    drawn = ("Click a key to see its decomposition (the polygon made again and decomposed again by the same "
+             "build; keys of up to {} vertices that ran) and the commands that draw it with <code>polydecomp run "
+             "--svg</code>; the page's address then names the key (<code>#key=...</code>).".format(
+                 drawings.DRAW_MAX_N) if table["drawings"] else
+             "Click a key to see the commands that draw its decomposition (<code>polydecomp run --svg</code>); "
+             "this report was written without drawings.")
     return section("keys", "Decompositions and keys", gallery,
                    "<p>Every key of the sweep: its status, pieces, CPU time of one call, operation counters and "
                    "the reason of an invalid, failed or skipped run. Type words to search (all must match, e.g. "
-                   "<code>monotone comb n:1000/</code> or <code>invalid</code>).</p>",
+                   "<code>monotone comb n:1000/</code> or <code>invalid</code>). {}</p>".format(drawn),
                    json_script("pd-keys-data", table),
                    search_table("pd-keys", ["key", "status", "pieces", "CPU time", "counters", "reason"], [2, 3],
-                                "search keys: words of the key, status or reason"))
+                                "search keys: words of the key, status or reason"),
+                   '<div id="pd-drawing"></div>')
 
 
 def compare_note_section():
@@ -666,8 +776,9 @@ def relative_link(path, out_path):
     return os.path.relpath(path, os.path.dirname(os.path.abspath(out_path))).replace(os.sep, "/")
 
 
-def render_report(context, runs, registry, refused=(), links=None):
-    """The report's HTML. links: {"files": [(name, href)], "bounds": href or None, "gallery": href or None}."""
+def render_report(context, runs, registry, refused=(), links=None, drawn=None):
+    """The report's HTML. links: {"files": [(name, href)], "bounds": href or None, "gallery": href or None};
+    drawn: drawings.draw's, or None for a page without drawings."""
     links = links or {}
     style = plotly_styles({run.algorithm for run in runs} | set(registry))
     known = [run for run in runs if run.algorithm in registry]  # the claims and kinds are the registry's
@@ -684,16 +795,16 @@ def render_report(context, runs, registry, refused=(), links=None):
         time_section(figures),
         bounds_section(verdict_rows(registry, times, ops, pieces), links.get("bounds")),
         pieces_section(families, ratio_rows),
-        keys_section(links.get("gallery"), key_table(runs)),
+        keys_section(links.get("gallery"), key_table(runs, drawn, drawings.corpus_folders(context))),
         compare_note_section(),
     ]
     return page("polydecomp sweep {}".format(context.get("sweep", "?")), sections, with_plotly=bool(figures))
 
 
-def write_report(results_path, registry, out_path, bounds_path=None, gallery_path=None):
+def write_report(results_path, registry, out_path, bounds_path=None, gallery_path=None, polydecomp=None):
     """Writes the report of one results file to out_path; bounds_path (bounds.md) and gallery_path
-    (plots/gallery.png) default to those beside the results file, linked when they exist. Returns the
-    page's size in bytes."""
+    (plots/gallery.png) default to those beside the results file, linked when they exist; with polydecomp
+    (the command line) the small keys are drawn (drawings.draw). Returns the page's size in bytes."""
     refused = []
     context, runs = results.load(results_path, refused)
     here = os.path.dirname(os.path.abspath(results_path))
@@ -703,7 +814,8 @@ def write_report(results_path, registry, out_path, bounds_path=None, gallery_pat
     files = [(os.path.basename(p), relative_link(p, out_path)) for p in (results_path, stem + ".csv", bounds_path)]
     links = {"files": [(name, href) for name, href in files if href],
              "bounds": relative_link(bounds_path, out_path), "gallery": relative_link(gallery_path, out_path)}
-    text = render_report(context, runs, registry, refused, links)
+    drawn = drawings.draw(runs, polydecomp, drawings.corpus_folders(context)) if polydecomp else None
+    text = render_report(context, runs, registry, refused, links, drawn)
     os.makedirs(os.path.dirname(os.path.abspath(out_path)), exist_ok=True)
     results.write_atomic(out_path, text)
     return len(text.encode("utf-8"))

@@ -83,5 +83,6 @@ def analyse(results_file, results_dir, build, gallery):
     made = plots.make_plots(results_file, registry, plots_dir, polydecomp, gallery)
     print("sweep: wrote {} and {} figures in {}".format(bounds_file, len(made), plots_dir), file=sys.stderr)
     page = os.path.join(results_dir, "index.html")
-    size = report.write_report(results_file, registry, page, bounds_file, os.path.join(plots_dir, "gallery.png"))
+    size = report.write_report(results_file, registry, page, bounds_file, os.path.join(plots_dir, "gallery.png"),
+                               polydecomp)
     print("sweep: wrote {} ({:.1f} MB)".format(page, size / 1e6), file=sys.stderr)

@@ -10,34 +10,10 @@
 // triangulation with n - 2, so that a tree costs O(s log r) for the s sites below (O(r log r) for
 // chazelle-dobkin's O(r) terminals) instead of O(n).
 //
-// The decomposition: from every notch, a vertical segment up, and one down, wherever that direction
-// points into P, to the first point of the boundary it meets (ray_shooting.h, O(r log n) each). The
-// segments are parallel, so no two cross, and each joins two points of the boundary: they are chords,
-// the dual graph of the faces is a tree, and P's geodesic between two points crosses exactly the
-// chords on the dual path between their faces, each once. Every face is convex: a notch's angle is cut
-// by the vertical directions inside it into parts of at most 180 degrees (one of them exactly 180 when
-// both are inside), and every other corner is a corner of P or part of one, or part of the 180 degrees
-// at a point inside an edge. So there are at most 2r chords and 2r + 1 faces, built in
-// O(n + r^2 log n + s log s) for the s points that matter (the sites: notches, chord ends and terminals,
-// sorted along the boundary).
-//
-// The walk: from a root, every face is entered once, through a window (a chord); the shortest paths
-// from the root to the points of the window form a funnel: two concave chains from an apex to the
-// window's ends. Each site of the face is reached from the funnel vertex whose wedge holds it
-// (funnel_tangent); going round the face from the window's left end to its right end these vertices
-// move monotonically, so each search starts where the last ended (first_holding). For every chord of
-// the face, the funnel of the face beyond is the part of the funnel between its ends' vertices, with
-// the chord's ends as its new ends: in one array, where a window changes at most its two ends,
-// restored when its subtree is done (a depth-first walk with an explicit stack). A funnel's vertices
-// are the root, notches and chord ends, O(r) of them, so a tree costs O(s log r) and O(s) space.
-//
-// Turns only: a geodesic that passes straight through a point (collinear with the points before and
-// after it) does not list it, so a path has O(r) points, the notches where it turns and its two ends.
-// Its first point after a start X in P lies on the ray along which it leaves X, at or beyond the first
-// point of the boundary that it meets. A straight geodesic touches the boundary between its ends
-// exactly where it passes a funnel vertex (a notch or a chord's end, met by the search as the nearer of
-// two on its line) or runs along a side of a face at its root that is not a chord: each tree records
-// that with each site's first turn.
+// The decomposition (vertical chords from every notch: at most 2r chords and 2r + 1 convex faces whose
+// dual graph is a tree, built in O(n + r^2 log n + s log s)), the funnel walk over it (one array of
+// funnel vertices, each window's two ends restored when its subtree is done) and what a path that
+// turns only at notches records: docs/algorithms/geodesics.md.
 //
 // Exact: every decision is an orientation of three points, taken with CGAL's filtered predicate when
 // all three are in doubles, else on intervals and, when they do not settle it, on exact rationals (a
