@@ -230,7 +230,7 @@ class SweepIntegration(unittest.TestCase):
         own = os.path.join(workdir, "drawn.json")
         with open(own, "w", encoding="utf-8") as f:
             json.dump({"drawn": dict(TINY_SWEEPS["tiny"], algorithms=["monotone", "hertel-mehlhorn", "keil"], curves=[
-                {"vs": "n", "families": ["random", "star"], "r": ["default"], "n": [20, 160]},
+                {"vs": "n", "families": ["random", "star"], "r": ["default"], "n": [20, 40, 80, 160]},
                 {"vs": "r", "families": ["comb"], "n": [64], "r": [4, 16]},
                 {"vs": "n", "families": ["comb-holes"], "r": ["default"], "h": [2], "n": [40]},
                 {"vs": "n", "families": ["dir:my polygons"]}])}, f)
