@@ -8,10 +8,18 @@
 // (std::set) of the edges with the interior on their right, ordered left to right along the sweep
 // line; edges are compared with orient() at the height of the lower of their two upper endpoints, and
 // a vertex is located with orient() against the edges: no intersection point is ever computed.
+//
+// The hot loop is locating vertices in the status (split, merge and right-chain vertices, and the
+// insertions). A vertex first tries the edge found at its upper neighbour (or inserted there, or what
+// replaced that edge since), and an insertion the place last located: two orientations confirm a
+// guess (the vertex lies right of the edge and left of its successor), where a search takes log n of
+// them; on a comb every tooth's lookups are answered so. The events are ordered by a merge sort:
+// introsort falls back to heapsort on comb-like polygons' order.
 #include "engines/triangulation/monotone.h"
 
 #include <algorithm>
 #include <cstdint>
+#include <memory_resource>
 #include <set>
 #include <vector>
 
@@ -49,7 +57,15 @@ struct LeftToRight {
 class MonotoneSweep {
  public:
   explicit MonotoneSweep(const Polygon& p)
-      : p_(p), n_(p.size()), type_(n_), helper_(n_), handle_(n_), status_(LeftToRight{&p, &comparisons_}) {}
+      : p_(p),
+        n_(p.size()),
+        type_(n_),
+        helper_(n_),
+        left_of_(n_, kNone),
+        replaced_by_(n_, kNone),
+        active_(n_, 0),
+        handle_(n_),
+        status_(LeftToRight{&p, &comparisons_}, &pool_) {}
 
   std::vector<Cut> run(Counters& counters) {
     for (std::uint32_t v = 0; v < n_; ++v) type_[v] = classify(v);
@@ -60,7 +76,9 @@ class MonotoneSweep {
   }
 
  private:
-  using Status = std::set<std::uint32_t, LeftToRight>;
+  using Status = std::pmr::set<std::uint32_t, LeftToRight>;
+  static constexpr std::uint32_t kNone = UINT32_MAX;
+  static constexpr int kChase = 4;  // replacements a guess follows before the search takes over
 
   // Start/end: both neighbours below/above and a convex angle; split/merge: the same with a reflex
   // angle. Otherwise the boundary descends (left chain, interior to the right) or ascends.
@@ -80,8 +98,8 @@ class MonotoneSweep {
     };
     std::vector<Key> keys(n_);
     for (std::uint32_t v = 0; v < n_; ++v) keys[v] = {p_[v].y(), p_[v].x(), v};
-    std::sort(keys.begin(), keys.end(),
-              [](const Key& a, const Key& b) { return a.y > b.y || (a.y == b.y && a.x < b.x); });
+    std::stable_sort(keys.begin(), keys.end(),
+                     [](const Key& a, const Key& b) { return a.y > b.y || (a.y == b.y && a.x < b.x); });
     std::vector<std::uint32_t> order(n_);
     for (std::uint32_t k = 0; k < n_; ++k) order[k] = keys[k].v;
     return order;
@@ -129,15 +147,21 @@ class MonotoneSweep {
     if (type_[helper_[e]] == VertexType::Merge) diagonals_.push_back({v, helper_[e]});
   }
 
+  // A start or split vertex's edge goes in just right of the edge last located, where the sweep often
+  // still is (a comb's teeth, left to right); std::set checks a hint and searches when it is wrong.
   void insert(std::uint32_t e) {
     ++tree_operations_;
-    handle_[e] = status_.insert(e).first;
+    handle_[e] = last_located_ != kNone && active_[last_located_]
+                     ? status_.insert(std::next(handle_[last_located_]), e)
+                     : status_.insert(e).first;
+    active_[e] = 1;
     helper_[e] = e;
   }
 
   void erase(std::uint32_t e) {
     ++tree_operations_;
     status_.erase(handle_[e]);
+    active_[e] = 0;
   }
 
   // On a left-chain vertex the outgoing edge takes the incoming edge's place in the order, so the
@@ -145,23 +169,46 @@ class MonotoneSweep {
   void replace(std::uint32_t old_edge, std::uint32_t new_edge) {
     tree_operations_ += 2;
     const auto next = status_.erase(handle_[old_edge]);
+    active_[old_edge] = 0;
+    replaced_by_[old_edge] = new_edge;
     handle_[new_edge] = status_.insert(next, new_edge);
+    active_[new_edge] = 1;
     helper_[new_edge] = new_edge;
   }
 
   // The status edge directly left of vertex v. Called only where the interior lies just left of v on
-  // the sweep line (split, merge and right-chain vertices), so a left boundary edge is there.
+  // the sweep line (split, merge and right-chain vertices), so a left boundary edge is there. Its
+  // upper neighbour next(v) is tried first: the edge it inserted (a start vertex), or the one it found,
+  // or what replaced that edge since, when its left chain went on.
   std::uint32_t edge_left_of(std::uint32_t v) {
     ++tree_operations_;
-    return *std::prev(status_.lower_bound(Probe{&p_[v]}));
+    const std::uint32_t up = static_cast<std::uint32_t>(p_.next(v));
+    std::uint32_t guess = type_[up] == VertexType::Start ? up : left_of_[up];
+    for (int step = 0; guess != kNone && !active_[guess] && step < kChase; ++step) guess = replaced_by_[guess];
+    if (guess == kNone || !active_[guess] || !directly_left(guess, p_[v]))
+      guess = *std::prev(status_.lower_bound(Probe{&p_[v]}));
+    return left_of_[v] = last_located_ = guess;
+  }
+
+  // Whether status edge e is the last one left of q: q is right of e and not right of e's successor.
+  bool directly_left(std::uint32_t e, const Point& q) {
+    const LeftToRight& left_to_right = status_.key_comp();
+    if (!left_to_right(e, Probe{&q})) return false;
+    const auto successor = std::next(handle_[e]);
+    return successor == status_.end() || !left_to_right(*successor, Probe{&q});
   }
 
   const Polygon& p_;
   std::uint32_t n_;
   std::vector<VertexType> type_;
   std::vector<std::uint32_t> helper_;
+  std::vector<std::uint32_t> left_of_;      // the status edge found directly left of a located vertex
+  std::vector<std::uint32_t> replaced_by_;  // the edge that took a left-chain edge's place in the status
+  std::vector<std::uint8_t> active_;        // whether an edge is in the status
   std::vector<Status::iterator> handle_;
+  std::uint32_t last_located_ = kNone;
   std::int64_t comparisons_ = 0, tree_operations_ = 0;
+  std::pmr::unsynchronized_pool_resource pool_;  // the status's nodes: an erase hands its node to an insert
   Status status_;
   std::vector<Cut> diagonals_;
 };
