@@ -88,14 +88,16 @@ class LayoutSweep {
     return offset_[e.part] + static_cast<std::uint32_t>(parts_[e.part]->prev(e.from));
   }
 
-  // Vertex v: the edges ending there leave the order, then the edges starting there join it.
+  // Vertex v: the edges ending there leave the order, then the edges starting there join it, tried
+  // first where the others left or went in (SweepStatus).
   void visit(std::uint32_t v) {
     const Point& p = point(v);
     const std::uint32_t ends[2] = {in_edge(v), v};
+    std::optional<SweepStatus<Below, Test>::Place> place;
     for (const std::uint32_t e : ends)
-      if (edges_[e].hi == p) active_.remove(e);
+      if (edges_[e].hi == p) place = active_.remove(e);
     for (const std::uint32_t e : ends)
-      if (edges_[e].lo == p) active_.insert(e);
+      if (edges_[e].lo == p) place = active_.insert(e, place);
     if (std::binary_search(leftmost_.begin(), leftmost_.end(), v)) check_nesting(v, ends[0], ends[1]);
   }
 

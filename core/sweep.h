@@ -33,22 +33,33 @@ int side_in_sweep(const P& elo, const P& ehi, const P& flo, const P& fhi) {
 // each edge's place. Inserting or removing an edge calls test(below, above) on each pair of edges
 // that become neighbours (which may throw too). The nodes come from a pool: an insertion and a removal
 // at every vertex would otherwise be a malloc and a free each.
+//
+// An insertion may name a place to try first: where an edge just left (at most vertices one edge
+// ends where the next starts, and takes its place) or where the other edge of its vertex went in.
+// std::set checks a hint against its two neighbours and searches only when it is wrong, so the order
+// is the same as without it, at two comparisons instead of log n.
 template <class Below, class Test>
 class SweepStatus {
+  using Active = std::pmr::set<std::uint32_t, Below>;
+
  public:
+  using Place = typename Active::iterator;
+
   SweepStatus(std::size_t edges, Below below, Test test) : active_(below, &pool_), where_(edges), test_(test) {}
 
-  void insert(std::uint32_t e) {
-    const auto it = active_.insert(e).first;
+  Place insert(std::uint32_t e, std::optional<Place> hint = std::nullopt) {
+    const auto it = hint ? active_.insert(*hint, e) : active_.insert(e).first;
     where_[e] = it;
     if (it != active_.begin()) test_(*std::prev(it), e);
     if (std::next(it) != active_.end()) test_(e, *std::next(it));
+    return it;
   }
-  void remove(std::uint32_t e) {
+  // Returns the place e leaves: the edge above it, or the end.
+  Place remove(std::uint32_t e) {
     const auto it = where_[e];
     const auto above = std::next(it);
     if (it != active_.begin() && above != active_.end()) test_(*std::prev(it), *above);
-    active_.erase(it);
+    return active_.erase(it);
   }
   // The edge just below e, which is in the order, if there is one.
   std::optional<std::uint32_t> below(std::uint32_t e) const {
@@ -58,7 +69,6 @@ class SweepStatus {
   }
 
  private:
-  using Active = std::pmr::set<std::uint32_t, Below>;
   std::pmr::unsynchronized_pool_resource pool_;
   Active active_;
   std::vector<typename Active::iterator> where_;
@@ -109,13 +119,15 @@ class CycleSweep {
   const P& lo(std::uint32_t e) const { return forward_[e] ? cycle_[e] : cycle_[next(e)]; }
   const P& hi(std::uint32_t e) const { return forward_[e] ? cycle_[next(e)] : cycle_[e]; }
 
-  // At vertex v its edge that ends here leaves the order before the one that starts here joins it.
+  // At vertex v its edge that ends here leaves the order before the one that starts here joins it,
+  // tried first at the place the other left (or, at a vertex where both start, beside the first).
   void visit(std::uint32_t v) {
     const std::uint32_t edges[2] = {v == 0 ? static_cast<std::uint32_t>(cycle_.size() - 1) : v - 1, v};
+    std::optional<typename Status::Place> place;
     for (const std::uint32_t e : edges)
-      if (&hi(e) == &cycle_[v]) active_.remove(e);
+      if (&hi(e) == &cycle_[v]) place = active_.remove(e);
     for (const std::uint32_t e : edges)
-      if (&lo(e) == &cycle_[v]) active_.insert(e);
+      if (&lo(e) == &cycle_[v]) place = active_.insert(e, place);
   }
   // Edges that share a vertex meet only there (no fold-backs, distinct points); others must not meet.
   void test(std::uint32_t a, std::uint32_t b) const {
@@ -125,8 +137,9 @@ class CycleSweep {
 
   const std::vector<P>& cycle_;
   const std::vector<std::uint32_t>& order_;
+  using Status = SweepStatus<Below, Test>;
   std::vector<bool> forward_;  // cycle[e] < cycle[next(e)]
-  SweepStatus<Below, Test> active_;
+  Status active_;
 };
 
 }  // namespace pd
