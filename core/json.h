@@ -1,6 +1,6 @@
-// The JSON reader (for GeoJSON input, fixtures and sweep files) and the string escaping the writers use,
-// both through nlohmann/json (json.cpp). Numbers keep their source text, and number() reads it by the
-// rule of core/coordinate.h, so that no number is read in part or silently changed.
+// The JSON reader (for GeoJSON input, fixtures and sweep files; json.cpp's own parser) and the string
+// escaping the writers use (through nlohmann/json). Numbers keep their source text, and number() reads
+// it by the rule of core/coordinate.h, so that no number is read in part or silently changed.
 #pragma once
 
 #include <map>
@@ -36,9 +36,10 @@ struct Json {
   double number() const;  // throws JsonError unless a finite number by core/coordinate.h's rule
 };
 
-// Parses a whole document; throws JsonError with the offset of the problem. Nesting is limited so that
-// hostile input cannot exhaust the stack. With pack_positions, arrays of positions are packed (see
-// Json::packed), so that a GeoJSON polygon costs about its coordinates' doubles, not a tree node each.
+// Parses a whole document (RFC 8259; a leading UTF-8 byte order mark is skipped); throws JsonError
+// with the byte offset of the problem. Nesting is limited so that hostile input cannot exhaust the
+// stack. With pack_positions, arrays of positions are packed (see Json::packed), so that a GeoJSON
+// polygon costs about its coordinates' doubles, not a tree node each.
 Json parse_json(std::string_view text, bool pack_positions = false);
 
 std::string json_quote(const std::string& s);

@@ -93,8 +93,8 @@ TEST(Readers, GeoJsonReadsNumbersWholeOrNotAtAll) {
     const std::string why = error_of(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[0,)" + form + "]]]}");
     EXPECT_EQ(why.rfind("JSON: syntax error", 0), 0u) << form << ": " << why;
   }
-  // JSON's grammar refuses the malformed forms first; nlohmann refuses an overflow itself, as "JSON:
-  // ... at offset N" with our reason.
+  // JSON's grammar refuses the malformed forms first; the JSON reader refuses an overflow itself, as
+  // "JSON: ... at offset N" with the rule's reason.
   for (const auto& [number, why] : kBadNumbers) {
     if (why.find("not a number") != std::string::npos) continue;
     const std::string prefix = number == "1e400" ? "JSON: " : "GeoJSON: ";
@@ -180,6 +180,25 @@ TEST(Readers, GeoJsonIsReadByItsGrammar) {
   EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0],[4,0],[0,3],]]})").rfind("JSON: syntax error", 0), 0u);
   EXPECT_EQ(ring_counts(R"({"type":"MultiPolygon","coordinates":[[[[0,0],[4,0],[0,3]]],[[[5,5],[6,5],[5,6]]]]})"),
             (std::vector<std::size_t>{1, 1}));
+}
+
+// A JSON refusal is one line naming its byte offset; the GeoJSON reader's own messages hold for packed
+// positions as for the others.
+TEST(Readers, GeoJsonErrorsNameTheirPlace) {
+  EXPECT_EQ(error_of("[[0,0],[1,0],[0,1]"), "JSON: syntax error: unexpected end of input at offset 18");
+  EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[0,1]]],})"),
+            "JSON: syntax error: expected a member name at offset 54");
+  EXPECT_EQ(error_of("[[0,0],[1,0],[0,\"1\"]]"), "GeoJSON: a coordinate is not a number");
+  EXPECT_EQ(error_of("[[0,0],[1,0],[0]]"), "GeoJSON: a position must be [x, y]");
+  EXPECT_EQ(error_of("[[0],[1],[0]]"), "GeoJSON: a position must be [x, y]");
+  EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[0,0],[1,0],[0,1]]})"),
+            "GeoJSON: a polygon's coordinates must be an array of rings");
+  EXPECT_EQ(error_of(R"({"type":"MultiPolygon","coordinates":[[0,0],[1,0],[0,1]]})"),
+            "GeoJSON: a MultiPolygon's coordinates must be an array of polygons");
+  EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[0,9007199254740993]]]})"),
+            "GeoJSON: '9007199254740993' is not exactly a double (the nearest is 9007199254740992)");
+  EXPECT_EQ(error_of(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[0,1]]]} x)"),
+            "JSON: syntax error: unexpected text after the document at offset 55");
 }
 
 TEST(Readers, GeoJson) {
