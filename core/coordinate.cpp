@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 
@@ -90,6 +91,18 @@ std::string exact_integer_text(double d) {
 }  // namespace
 
 std::optional<double> plain_coordinate(const char*& at, const char* end) {
+  // The commonest coordinate, an integer of at most 15 characters, is exactly its digits' value and
+  // needs no from_chars; anything longer, or with more to it, goes on to from_chars.
+  const char* p = at + (at < end && *at == '-');
+  std::int64_t magnitude = 0;
+  for (; p < end && is_digit(*p) && p - at < static_cast<std::ptrdiff_t>(kAlwaysExactDigits); ++p)
+    magnitude = magnitude * 10 + (*p - '0');
+  if (p > at && is_digit(p[-1]) && (p == end || !(is_digit(*p) || *p == '.' || *p == 'e' || *p == 'E'))) {
+    const double d = static_cast<double>(magnitude);
+    const bool negative = *at == '-';
+    at = p;
+    return negative ? -d : d;
+  }
   double d;
   const char* start = at;
   const auto [stop, error] = std::from_chars(start, end, d);

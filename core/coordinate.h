@@ -21,10 +21,10 @@ namespace pd {
 std::optional<double> coordinate_value(std::string_view text, std::string& why);
 
 // The fast path of the rule for the plain numbers that fill large files: [-]D+ of at most 15 digits
-// or [-]D*.D* of at most 300 characters, read in one from_chars pass at `at`, which it moves past the
-// number. Such a number can neither overflow, underflow nor be an integer that no double holds, so
-// its value is what coordinate_value gives. Returns nothing (and leaves `at`) for any other text,
-// which coordinate_value reads; the caller checks what follows the number.
+// or [-]D*.D* of at most 300 characters, read in one pass (from_chars for a decimal) at `at`, which it
+// moves past the number. Such a number can neither overflow, underflow nor be an integer that no
+// double holds, so its value is what coordinate_value gives. Returns nothing (and leaves `at`) for any
+// other text, which coordinate_value reads; the caller checks what follows the number.
 std::optional<double> plain_coordinate(const char*& at, const char* end);
 
 // Input text quoted for an error message: at most `limit` characters, control bytes, NUL and bytes
