@@ -18,48 +18,10 @@
 // Feasible: 16 <= n <= 1,000,000, r = 4m with m >= 1, n >= 3r + 4.
 // Default r: 4 max(1, (n-4)/12), the most groups that fit.
 //
-// Ranges. The range R(v) of a tip (Sec. 2.2) lies in its cone, bounded by the extensions of its two
-// slit edges: for BL the points (x0 + 24 + dx, 12 + dy) with dy/4 <= dx <= 5dy/12 (so dy >= 0), an
-// 8.6-degree wedge along the slit's axis; the other three cones are its mirror images.
-// (i) No tip lies in another tip's cone: BL's cone meets the line y = 12 only at its apex and y = 48
-//     only at x0 + [33, 39], and every tip lies on one of those lines at x = 24 or 56 (mod 80); by the
-//     symmetries the same holds for every tip.
-// (ii) No point lies in the ranges of three tips. An arc bulges by less than 1/6 of its chord (its
-//     slopes against the chord stay below 1/3), the longest horizontal chord is 38 and the strip's
-//     ends bulge sideways only, so P lies in -6.4 < y < 66.4; there BL's cone spans
-//     x0 + [24, 46.7] and by symmetry every range of group j lies in x0 + [24, 56]: ranges of different
-//     groups are disjoint. Within a group, BL's cone lies left of the line x = x0 + 24 + 5(y - 12)/12
-//     and TR's right of x = x0 + 56 - 5(48 - y)/12, 17 apart at every height, so they are disjoint;
-//     likewise TL's and BR's. Any three notches of a group include BL and TR or TL and BR.
-// Known optimum with Steiner points: 3m + 1 = r + 1 - r/4 convex pieces.
-//   Upper bound: in each group the tree BL-S, TL-S, S-S', S'-BR, S'-TR with S = (x0 + 30, 30) and
-//   S' = (x0 + 50, 30), inside the template and so in P, is an X4-pattern: S - BL = (6, 18) lies strictly inside BL's cone (dx/dy = 1/3,
-//   between 1/4 and 5/12), likewise for the other tips, and the angles around S and S' are 108.4,
-//   143.1 and 108.4 degrees. The m trees cut P into a bottom and a top piece per group and m + 1
-//   pieces between and beyond the groups, 3m + 1 in all; each is convex because every vertex turns
-//   left in it (the tips' angles are split inside their cones, the Steiner points' angles are below
-//   180 degrees, and every other vertex is a convex vertex of P).
-//   Lower bound: OPT = r + 1 - p, p the most compatible X-patterns (Theorem 7). A tree with l leaves
-//   and s vertices of degree 3 has l = s + 2. An X-pattern with at most 3 notches (vertices of degree 1
-//   or 2) is therefore a path, whose end's neighbour is a notch inside the end's range, excluded by
-//   (i), or a star of three leaves around one point of their three ranges, excluded by (ii). So every
-//   X-pattern joins at least 4 notches; compatible patterns share none (their edges would meet there),
-//   so p <= r/4 = m and OPT >= 3m + 1. The count does not need patterns to stay within a group: (ii)
-//   confines three-leaf stars to one, larger patterns might span two, and the count allows for it.
-// Known optimum with diagonals only: r + 1 = 4m + 1 pieces. Upper bound: the four diagonals BL-BR,
-//   BR-TR, TR-TL, TL-BL of each group (its inner rectangle) leave the rectangle, a bottom and a top
-//   piece per group and m + 1 pieces between and beyond the groups, each convex (the tips' angles in
-//   them are 90, 104 and 157.4 degrees). Lower bound: a tip with one diagonal needs it inside its cone,
-//   so by (i) its other end is no notch: such tips have diagonals of their own, one each; every other
-//   tip needs two diagonal ends, on further diagonals of two ends each; hence at least r diagonals,
-//   r + 1 pieces.
+// Known optima: 3m + 1 = r + 1 - r/4 convex pieces with Steiner points (one X4-pattern a group, and no
+// X-pattern joins fewer than four notches), r + 1 with diagonals only; the ranges, both bounds and why
+// the polygon is simple: docs/families.md, "Why x4-quads has the optimum it claims".
 // Complexity: O(n log n) (the arcs' vectors).
-// Why simple: the template is simple (each slit is 2 wide at its mouth, 12 deep, inside its side's
-// fifth of the strip, and the slits are at least 32 apart). An arc uses local vectors (a, b), a >= 1,
-// |b| < a/3, summing along its side, so it stays outside the template within 18.5 degrees of its side;
-// every vertex it starts or ends at (a corner, 90 degrees, a mouth where the slit begins, 67.4, or one
-// where it ends, 104) turns by more than 37 degrees in the template, so it stays convex and the arcs of
-// neighbouring sides stay apart.
 // Coordinates: below 1.2e8 at n = 1e6 (largest for the smallest r, 1.15e8 at r = 4, the extra vertices
 // then on few sides).
 #include "generators/family.h"
