@@ -233,6 +233,8 @@ class SweepIntegration(unittest.TestCase):
                 {"vs": "n", "families": ["random", "star"], "r": ["default"], "n": [20, 40, 80, 160]},
                 {"vs": "r", "families": ["comb"], "n": [64], "r": [4, 16]},
                 {"vs": "n", "families": ["comb-holes"], "r": ["default"], "h": [2], "n": [40]},
+                {"vs": "h", "families": ["convex-holes"], "n": [40], "r": ["default"], "h": [0, 2]},
+                {"vs": "r", "families": ["star"], "n": [30], "r": ["default"]},
                 {"vs": "n", "families": ["dir:my polygons"]}])}, f)
         command = [sys.executable, os.path.join(HERE, "sweep.py"), "--sweep", "drawn", "--sweep-file", own,
                    "--build", BUILD, "--results", os.path.join(workdir, "results"), "--no-analysis"]
@@ -261,8 +263,12 @@ class SweepIntegration(unittest.TestCase):
                          ["", shlex.quote(os.path.join(folder, "holes.wkt"))])
         self.assertEqual(sources["comb/n:64/r:16/seed:1"][0], "polydecomp generate --family comb --n 64 --reflex 16 "
                                                               "--seed 1 --format wkt -o polygon.wkt")
-        star = next(polygon for polygon in sources if polygon.startswith("star/n:20/"))
-        self.assertNotIn("--reflex", sources[star][0])  # r is an outcome of the family
+        for prefix in ("star/n:20/", "star/n:30/"):  # r is an outcome of the family, on any curve
+            star = next(polygon for polygon in sources if polygon.startswith(prefix))
+            self.assertNotIn("--reflex", sources[star][0])
+        no_holes = next(polygon for polygon in sources
+                        if polygon.startswith("convex-holes/n:40/") and "/h:0/" in polygon)
+        self.assertIn("--holes 0", sources[no_holes][0])
         drawn = sum(1 for row in table["rows"] if row[7] is not None)
         self.assertGreater(drawn, 20)
 

@@ -21,6 +21,7 @@ from fractions import Fraction
 
 DRAW_MAX_N = 100  # vertices (holes included) of the largest polygon drawn: more is not legible on a page
 RUN_SECONDS = 10  # --max-seconds of a run made again
+USAGE_ERROR = 2  # generate's exit status for options that do not go together (an r the family cannot choose)
 INVALID_RESULT = 5  # run's exit status when the result is not valid; its report is printed as usual
 COORDINATE_DIGITS = 7  # significant digits of a drawn coordinate
 ALPHABET = "".join(chr(c) for c in range(0x21, 0x7e) if chr(c) not in "\"\\<>&'")  # safe in JSON and HTML
@@ -46,14 +47,17 @@ def corpus_folders(context):
     return folders
 
 
-def generate_arguments(run):
+def generate_arguments(run, with_reflex=None):
     """`polydecomp generate`'s arguments for a generated key's polygon. A key on a curve of the family's
-    default r is made without --reflex: that is how the sweep made it, and the only way for a family whose
-    r is an outcome."""
+    default r is made without --reflex, as the sweep made it; other keys with --reflex, unless with_reflex
+    is False (a family whose r is an outcome refuses --reflex: made_again then makes it without). A
+    family with holes has h in its keys, 0 included."""
+    if with_reflex is None:
+        with_reflex = not any("r=default" in label for label in run.curves)
     args = ["--family", run.family, "--n", str(run.n)]
-    if not any("r=default" in label for label in run.curves):
+    if with_reflex:
         args += ["--reflex", str(run.r)]
-    if run.h:
+    if "/h:" in run.name:
         args += ["--holes", str(run.h)]
     return args + ["--seed", str(run.seed), "--format", "wkt"]
 
@@ -72,14 +76,15 @@ def shown_path(path):
     return path if relative.startswith(os.pardir) else relative
 
 
-def polygon_source(run, corpora):
+def polygon_source(run, corpora, made_by=None):
     """(the shell command that makes the key's polygon as polygon.wkt, or "" for a corpus file; the file
     `run --input` then reads): the page builds the commands that draw any key (`run --svg`) from them. A
-    report written in a checkout names its corpus files from the checkout's top."""
+    report written in a checkout names its corpus files from the checkout's top. made_by: the generate
+    arguments that made the polygon again (made_again's), when it was."""
     source = polygon_input(run, corpora)
     if source is not None:
         return "", shlex.quote(shown_path(source))
-    command = ["polydecomp", "generate"] + generate_arguments(run) + ["-o", "polygon.wkt"]
+    command = ["polydecomp", "generate"] + (made_by or generate_arguments(run)) + ["-o", "polygon.wkt"]
     return " ".join(shlex.quote(a) for a in command), "polygon.wkt"
 
 
@@ -124,17 +129,20 @@ def flat(points):
 
 
 def made_again(polydecomp, run, corpora, folder):
-    """The polygon file of the key's polygon (generated into `folder` once per polygon), or an error text."""
+    """(the polygon file of the key's polygon or an error text, the generate arguments that made it or
+    None): generated into `folder` (once per polygon, by its caller), or the key's corpus file."""
     source = polygon_input(run, corpora)
     if source is not None:
-        return source if os.path.isfile(source) else "its corpus file {} is not here".format(source)
+        return (source if os.path.isfile(source) else "its corpus file {} is not here".format(source)), None
     path = os.path.join(folder, "polygon-{}-{}-{}-{}-{}.wkt".format(run.family, run.n, run.r, run.h, run.seed))
-    if not os.path.exists(path):
-        done = subprocess.run([polydecomp, "generate"] + generate_arguments(run) + ["-o", path],
-                              capture_output=True, text=True)
-        if done.returncode != 0:
-            return done.stderr.strip() or "generate exited {}".format(done.returncode)
-    return path
+    args = generate_arguments(run)
+    done = subprocess.run([polydecomp, "generate"] + args + ["-o", path], capture_output=True, text=True)
+    if done.returncode == USAGE_ERROR and "--reflex" in args:
+        args = generate_arguments(run, with_reflex=False)
+        done = subprocess.run([polydecomp, "generate"] + args + ["-o", path], capture_output=True, text=True)
+    if done.returncode != 0:
+        return done.stderr.strip() or "generate exited {}".format(done.returncode), None
+    return path, args
 
 
 def decomposition(polydecomp, run, polygon_file):
@@ -147,7 +155,10 @@ def decomposition(polydecomp, run, polygon_file):
         return "the run did not end within {} s".format(4 * RUN_SECONDS)
     if done.returncode not in (0, INVALID_RESULT):
         return done.stderr.strip() or "run exited {}".format(done.returncode)
-    return json.loads(done.stdout)
+    try:
+        return json.loads(done.stdout)
+    except ValueError:
+        return "run printed no JSON object (exit {})".format(done.returncode)
 
 
 def drawable(run):
@@ -156,7 +167,8 @@ def drawable(run):
 
 def draw(runs, polydecomp, corpora, progress=sys.stderr):
     """{run name: drawing or error text} of the drawable runs. A drawing is {"vertices": flat coordinates of
-    the polygon's n vertices, "steiner": those of the Steiner points, "pieces": encode_pieces' text}."""
+    the polygon's n vertices, "steiner": those of the Steiner points, "pieces": encode_pieces' text,
+    "made_by": the generate arguments that made the polygon, None for a corpus file}."""
     chosen = [run for run in runs if drawable(run)]
     out = {}
     with tempfile.TemporaryDirectory(prefix="pd-drawings-") as folder:
@@ -166,16 +178,17 @@ def draw(runs, polydecomp, corpora, progress=sys.stderr):
                 polygons[run.polygon] = made_again(polydecomp, run, corpora, folder)
 
         def one(run):
-            polygon_file = polygons[run.polygon]
+            polygon_file, made_by = polygons[run.polygon]
             if not os.path.isfile(polygon_file):
                 return run, "not drawn: " + polygon_file
             d = decomposition(polydecomp, run, polygon_file)
             if isinstance(d, str):
                 return run, "not drawn: " + d
-            if run.file is None and (d["n"] != run.n or d["reflex"] != run.r):
-                return run, "not drawn: the polygon made again has n = {}, r = {}".format(d["n"], d["reflex"])
+            if run.file is None and (d["n"], d["reflex"], d["holes"]) != (run.n, run.r, run.h):
+                return run, "not drawn: the polygon made again has n = {}, r = {}, h = {}".format(
+                    d["n"], d["reflex"], d["holes"])
             return run, {"vertices": flat(d["points"][:d["n"]]), "steiner": flat(d["points"][d["n"]:]),
-                         "pieces": encode_pieces(d["pieces"])}
+                         "pieces": encode_pieces(d["pieces"]), "made_by": made_by}
 
         with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
             for done, (run, drawing) in enumerate(pool.map(one, chosen), 1):

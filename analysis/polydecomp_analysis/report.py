@@ -355,7 +355,10 @@ def key_table(runs, drawn=None, corpora=None):
     rows, pictures, sources = [], [], {}
     for run in runs:
         polygon = run.name[len(run.algorithm) + 1:]
-        sources.setdefault(polygon, drawings.polygon_source(run, corpora or {}))
+        drawing = drawn.get(run.name)
+        if polygon not in sources or isinstance(drawing, dict):  # a drawn key knows how its polygon was made
+            sources[polygon] = drawings.polygon_source(run, corpora or {},
+                                                       drawing.get("made_by") if isinstance(drawing, dict) else None)
         rows.append([index("algorithms", run.algorithm), index("polygons", polygon), index("statuses", run.status),
                      index("reasons", run.reason), run.pieces, rounded(run.seconds) if run.timed else None,
                      [_number(run.ops[c]) if c in run.ops else None for c in counters[run.algorithm]]
@@ -593,7 +596,9 @@ SCRIPT = """
     return '<svg xmlns="http://www.w3.org/2000/svg" viewBox="-10 -10 ' + (w + 20) + " " + (h + 20) + '">' +
            shapes.join("") + "</svg>";
   }
-  function quoted(word) { return /^[A-Za-z0-9_.\\/:=-]+$/.test(word) ? word : "'" + word + "'"; }
+  function quoted(word) {  // as Python's shlex.quote
+    return /^[A-Za-z0-9_.\\/:=-]+$/.test(word) ? word : "'" + word.replace(/'/g, "'\\"'\\"'") + "'";
+  }
   function showKey(t, i) {
     var r = t.rows[i], algorithm = t.algorithms[r[0]], name = algorithm + "/" + t.polygons[r[1]];
     var source = t.sources[r[1]], picture = r[7];
@@ -615,7 +620,10 @@ SCRIPT = """
       try { history.replaceState(null, "", "#key=" + encodeURIComponent(names[i])); } catch (e) { /* file: */ }
     };
     searchable("pd-keys", keyRows(keys), pick);
-    var wanted = location.hash.indexOf("#key=") === 0 ? names.indexOf(decodeURIComponent(location.hash.slice(5))) : -1;
+    var wanted = -1;
+    try {
+      if (location.hash.indexOf("#key=") === 0) wanted = names.indexOf(decodeURIComponent(location.hash.slice(5)));
+    } catch (e) { /* a malformed address names no key */ }
     if (wanted >= 0) {
       showKey(keys, wanted); document.getElementById("pd-drawing").scrollIntoView();
     } else {

@@ -26,6 +26,21 @@ class Commands(unittest.TestCase):
                                                          ["vs-n r=default h=2"])),
                          ["--family", "comb-holes", "--n", "40", "--holes", "2", "--seed", "1", "--format", "wkt"])
 
+    def test_a_family_with_holes_gets_its_h_even_when_it_is_0(self):
+        self.assertEqual(drawings.generate_arguments(run("keil/convex-holes/n:50/r:0/h:0/seed:1", ["vs-h n=50"])),
+                         ["--family", "convex-holes", "--n", "50", "--reflex", "0", "--holes", "0", "--seed", "1",
+                          "--format", "wkt"])
+
+    def test_the_commands_are_those_that_made_the_polygon_again(self):
+        key = run("monotone/star/n:20/r:8/seed:3", ["vs-r n=20"])  # star refuses --reflex
+        made_by = drawings.generate_arguments(key, with_reflex=False)
+        self.assertNotIn("--reflex", made_by)
+        drawn = {key.name: {"vertices": [0, 0, 1, 0, 0, 1], "steiner": [],
+                            "pieces": drawings.encode_pieces([[0, 1, 2]]), "made_by": made_by}}
+        table = report.key_table([run("ear-n2/star/n:20/r:8/seed:3", ["vs-r n=20"], status="skipped"), key], drawn, {})
+        self.assertEqual(table["sources"], [("polydecomp generate " + " ".join(made_by) + " -o polygon.wkt",
+                                             "polygon.wkt")])
+
     def test_a_corpus_key_is_read_from_its_folder_in_the_sweeps_file(self):
         with tempfile.TemporaryDirectory() as root:
             sweeps = os.path.join(root, "harness", "sweeps.json")
