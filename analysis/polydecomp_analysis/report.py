@@ -362,7 +362,7 @@ def key_table(runs, drawn=None, corpora=None):
         rows.append([index("algorithms", run.algorithm), index("polygons", polygon), index("statuses", run.status),
                      index("reasons", run.reason), run.pieces, rounded(run.seconds) if run.timed else None,
                      [_number(run.ops[c]) if c in run.ops else None for c in counters[run.algorithm]]
-                     if run.ops else [], picture(drawn.get(run.name), pictures, index)])
+                     if run.ops else [], picture(drawing, pictures, index)])
     table = {kind: list(values) for kind, values in lists.items()}
     table["shapes"] = [list(shape) for shape in table["shapes"]]
     table["counters"] = {name: counters.get(name, []) for name in table["algorithms"]}
