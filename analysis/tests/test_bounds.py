@@ -1,12 +1,11 @@
 import json
 import os
 import re
-import tempfile
 import unittest
 
 from polydecomp_analysis import bounds, fit, results
 
-from . import synthetic
+from . import synthetic, synthetic_case
 
 
 def row(markdown, section, first_cells):
@@ -28,26 +27,17 @@ def curve(checked, label):
     return next(c for c in checked.checks if c.label == label)
 
 
-class SyntheticSweep(unittest.TestCase):
+class SyntheticSweep(synthetic_case.SyntheticCase):
     """bounds.md of the synthetic sweep, whose truth is known, and the rows it is rendered from."""
 
     @classmethod
     def setUpClass(cls):
-        cls.tmp = tempfile.TemporaryDirectory()
-        cls.results_path = os.path.join(cls.tmp.name, "synthetic.json")
-        cls.registry_path = os.path.join(cls.tmp.name, "registry.json")
-        synthetic.write(cls.results_path, cls.registry_path)
-        cls.registry = bounds.load_registry(registry_file=cls.registry_path)
-        cls.runs = results.load(cls.results_path)[1]
+        super().setUpClass()
         out = os.path.join(cls.tmp.name, "bounds.md")
         cls.times, cls.ops, pieces = bounds.write_bounds(cls.results_path, cls.registry, out)
         cls.pieces = {p.algorithm: p for p in pieces}
         with open(out, encoding="utf-8") as f:
             cls.md = f.read()
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.tmp.cleanup()
 
 
 class BoundsTest(SyntheticSweep):

@@ -9,7 +9,7 @@ import unittest
 import browser_test
 from polydecomp_analysis import bounds, plots, report, results
 
-from . import synthetic
+from . import synthetic, synthetic_case
 
 ANALYSIS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -30,23 +30,14 @@ def traces(figures, figure_id, algorithm):
     return [t for t in figure["data"] if t["legendgroup"] == algorithm]
 
 
-class SyntheticReport(unittest.TestCase):
+class SyntheticReport(synthetic_case.SyntheticCase):
     """The report of the synthetic sweep, whose growth and piece counts are known."""
 
     @classmethod
     def setUpClass(cls):
-        cls.tmp = tempfile.TemporaryDirectory()
-        cls.results_path = os.path.join(cls.tmp.name, "synthetic.json")
-        cls.registry_path = os.path.join(cls.tmp.name, "registry.json")
-        synthetic.write(cls.results_path, cls.registry_path)
-        cls.registry = bounds.load_registry(registry_file=cls.registry_path)
-        cls.context, cls.runs = results.load(cls.results_path)
+        super().setUpClass()
         cls.style = report.plotly_styles({r.algorithm for r in cls.runs} | set(cls.registry))
         cls.figures = report.time_figures(cls.runs, cls.registry, cls.style)
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.tmp.cleanup()
 
     def path(self, name):
         return os.path.join(self.tmp.name, name)
