@@ -88,60 +88,59 @@ class Parser {
     skip_space();
   }
 
+  void close() {
+    ++at_;
+    --depth_;
+  }
+
+  // Just after the opening bracket: whether the container is empty (then closed).
+  bool closes_at_once(char bracket) {
+    if (at_ == end_ || *at_ != bracket) return false;
+    close();
+    return true;
+  }
+
+  // After an item: whether a ',' follows (another item comes), else the closing bracket (then closed).
+  bool another_item(char bracket, const char* expected) {
+    skip_space();
+    if (at_ < end_ && *at_ == ',') {
+      ++at_;
+      skip_space();
+      return true;
+    }
+    if (at_ == end_ || *at_ != bracket) fail_here_or_end(expected);
+    close();
+    return false;
+  }
+
   Json object() {
     open();
     Json v;
     v.type = Json::Type::Object;
-    if (at_ < end_ && *at_ == '}') {
-      ++at_;
-      --depth_;
-      return v;
-    }
-    for (;;) {
+    if (closes_at_once('}')) return v;
+    do {
       if (at_ == end_ || *at_ != '"') fail_here_or_end("expected a member name");
       std::string key = string();
       skip_space();
       if (at_ == end_ || *at_ != ':') fail_here_or_end("expected ':'");
       ++at_;
       v.fields.insert_or_assign(std::move(key), value());  // a repeated name keeps its last value
-      skip_space();
-      if (at_ < end_ && *at_ == ',') {
-        ++at_;
-        skip_space();
-        continue;
-      }
-      if (at_ == end_ || *at_ != '}') fail_here_or_end("expected ',' or '}'");
-      ++at_;
-      --depth_;
-      return v;
-    }
+    } while (another_item('}', "expected ',' or '}'"));
+    return v;
   }
 
   Json array() {
     open();
     Json v;
     v.type = Json::Type::Array;
-    if (at_ < end_ && *at_ == ']') {
-      ++at_;
-      --depth_;
-      return v;
-    }
-    for (;;) {
+    if (closes_at_once(']')) return v;
+    do {
       if (!(pack_ && v.items.empty() && at_ < end_ && *at_ == '[' && position(v))) {
         unpack(v);
         v.items.push_back(value());
       }
-      skip_space();
-      if (at_ < end_ && *at_ == ',') {
-        ++at_;
-        skip_space();
-        continue;
-      }
-      if (at_ == end_ || *at_ != ']') fail_here_or_end("expected ',' or ']'");
-      ++at_;
-      --depth_;
-      return v;
-    }
+    } while (another_item(']', "expected ',' or ']'"));
+    return v;
   }
 
   // At '[': reads an array of numbers, each a coordinate, as one more row of `array`'s packed rows if it
