@@ -11,8 +11,6 @@
 namespace pd {
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
 bool equals_ignoring_case(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i)

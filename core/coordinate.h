@@ -20,7 +20,10 @@ namespace pd {
 // for a double (it is not 0)"); the reason quotes the text with quoted_input.
 std::optional<double> coordinate_value(std::string_view text, std::string& why);
 
-// The fast path of the rule for the plain numbers that fill large files: [-]D+ of at most 15 digits
+// An ASCII digit, as both number grammars (the coordinate rule, JSON's) spell it; not the locale's.
+inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// The fast path of the rule for the plain numbers that fill large files: [-]D+ of at most 15 characters
 // or [-]D*.D* of at most 300 characters, read in one pass (from_chars for a decimal) at `at`, which it
 // moves past the number. Such a number can neither overflow, underflow nor be an integer that no
 // double holds, so its value is what coordinate_value gives. Returns nothing (and leaves `at`) for any

@@ -20,8 +20,6 @@ namespace {
 
 constexpr std::size_t kMaxDepth = 256;
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
 class Parser {
  public:
   Parser(std::string_view text, bool pack_positions)
