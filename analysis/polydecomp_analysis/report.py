@@ -784,9 +784,9 @@ def relative_link(path, out_path):
     return os.path.relpath(path, os.path.dirname(os.path.abspath(out_path))).replace(os.sep, "/")
 
 
-def render_report(context, runs, registry, refused=(), links=None, drawn=None):
+def render_report(context, runs, registry, refused=(), links=None, drawn=None, corpora=None):
     """The report's HTML. links: {"files": [(name, href)], "bounds": href or None, "gallery": href or None};
-    drawn: drawings.draw's, or None for a page without drawings."""
+    drawn: drawings.draw's, or None for a page without drawings; corpora: drawings.corpus_folders'."""
     links = links or {}
     style = plotly_styles({run.algorithm for run in runs} | set(registry))
     known = [run for run in runs if run.algorithm in registry]  # the claims and kinds are the registry's
@@ -803,7 +803,7 @@ def render_report(context, runs, registry, refused=(), links=None, drawn=None):
         time_section(figures),
         bounds_section(verdict_rows(registry, times, ops, pieces), links.get("bounds")),
         pieces_section(families, ratio_rows),
-        keys_section(links.get("gallery"), key_table(runs, drawn, drawings.corpus_folders(context))),
+        keys_section(links.get("gallery"), key_table(runs, drawn, corpora)),
         compare_note_section(),
     ]
     return page("polydecomp sweep {}".format(context.get("sweep", "?")), sections, with_plotly=bool(figures))
@@ -822,8 +822,9 @@ def write_report(results_path, registry, out_path, bounds_path=None, gallery_pat
     files = [(os.path.basename(p), relative_link(p, out_path)) for p in (results_path, stem + ".csv", bounds_path)]
     links = {"files": [(name, href) for name, href in files if href],
              "bounds": relative_link(bounds_path, out_path), "gallery": relative_link(gallery_path, out_path)}
-    drawn = drawings.draw(runs, polydecomp, drawings.corpus_folders(context)) if polydecomp else None
-    text = render_report(context, runs, registry, refused, links, drawn)
+    corpora = drawings.corpus_folders(context)
+    drawn = drawings.draw(runs, polydecomp, corpora) if polydecomp else None
+    text = render_report(context, runs, registry, refused, links, drawn, corpora)
     os.makedirs(os.path.dirname(os.path.abspath(out_path)), exist_ok=True)
     results.write_atomic(out_path, text)
     return len(text.encode("utf-8"))
