@@ -10,24 +10,50 @@
 // allowed. Output: diagonals only, no Steiner points; every diagonal left is essential, so at most
 // 2r + 1 - h pieces, at most 4 OPT without holes. The O(n) removal, with its half-edge lists built by
 // counting sorts, is in engines/convex/essential_diagonals.h.
+//
+// The diagonals are considered in the order the triangulation gives them (for `monotone`: monotone
+// piece by piece, in the order of the partition's sweep). The paper leaves the triangulation open, and
+// the pieces depend on it: `hertel-mehlhorn[T]` is the same removal over registered triangulation T
+// (every one without Steiner points, the peers' included), in T's order of its cuts or of its
+// triangles' edges; it takes what T takes, and its time is T's plus O(n). (Over `monotone` it is
+// `hertel-mehlhorn` itself, which is not registered twice.)
 #include "core/registry.h"
 #include "engines/convex/essential_diagonals.h"
 #include "engines/triangulation/monotone.h"
+
+#include <chrono>
 
 namespace pd {
 namespace {
 
 Decomposition hertel_mehlhorn(const Polygon& p, Counters& counters) {
-  Counters triangulation_counters;
-  const std::vector<Cut> diagonals = triangulate_monotone(p, triangulation_counters).cuts;
-  std::int64_t tests = 0;
-  Decomposition d;
-  d.cuts = essential::keep_essential(p, diagonals, tests);
-  for (const auto& [name, value] : triangulation_counters) counters["triangulation_" + name] = value;
-  counters["diagonals"] = static_cast<std::int64_t>(diagonals.size());
-  counters["diagonals_removed"] = static_cast<std::int64_t>(diagonals.size() - d.cuts.size());
-  counters["essential_tests"] = tests;
+  Counters triangulation;
+  const std::vector<Cut> diagonals = triangulate_monotone(p, triangulation).cuts;
+  return essential::removal_result(p, diagonals, triangulation, counters);
+}
+
+// The variant over `base`: when the base times itself (a plug-in), the variant's time is the base's
+// own time plus the removal's.
+Decomposition over_triangulation(const Algorithm& base, const Polygon& p, Counters& counters) {
+  Counters triangulation;
+  const Decomposition t = base.run(p, triangulation);
+  const auto start = std::chrono::steady_clock::now();
+  Decomposition d = essential::removal_result(p, essential::triangulation_diagonals(p, t), triangulation, counters);
+  if (t.own_seconds)
+    d.own_seconds = *t.own_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;
+}
+
+Algorithm variant(const Algorithm& base) {
+  Algorithm a = *find_algorithm("hertel-mehlhorn");
+  a.time_bound = base.time_bound;
+  a.source = "Hertel-Mehlhorn as in hertel-mehlhorn, over the " + base.name + " triangulation";
+  a.peer = base.peer;
+  a.accepts = base.accepts;
+  a.size_ceiling = base.size_ceiling;
+  a.times_itself = base.times_itself;
+  a.run = [base](const Polygon& p, Counters& counters) { return over_triangulation(base, p, counters); };
+  return a;
 }
 
 }  // namespace
@@ -36,5 +62,11 @@ REGISTER_ALGORITHM({.name = "hertel-mehlhorn", .kind = Kind::Convex, .time_bound
                     .pieces_bound = "<= 4*OPT",
                     .source = "Hertel-Mehlhorn via Keil-Snoeyink (001) Sec. 2 and slides (003); O(n) after the monotone triangulation",
                     .accepts = {.holes = true}, .run = hertel_mehlhorn});
+
+REGISTER_VARIANTS({.name = "hertel-mehlhorn",
+                   .takes = [](const Algorithm& base) {
+                     return base.kind == Kind::Triangulation && !base.steiner && base.name != "monotone";
+                   },
+                   .make = variant});
 
 }  // namespace pd

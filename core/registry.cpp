@@ -2,7 +2,38 @@
 
 #include "core/json.h"
 
+#include <vector>
+
 namespace pd {
+namespace {
+
+std::vector<VariantFamily>& variant_families() {
+  static std::vector<VariantFamily> registered;
+  return registered;
+}
+
+void add_variant(const VariantFamily& family, const Algorithm& base) {
+  if (!base.variant_of.empty() || !family.takes(base)) return;
+  Algorithm variant = family.make(base);
+  variant.name = variant_name(family.name, base.name);
+  variant.variant_of = base.name;
+  NamedRegistry<Algorithm>::add(std::move(variant));
+}
+
+}  // namespace
+
+bool register_algorithm(Algorithm a) {
+  NamedRegistry<Algorithm>::add(a);
+  for (const VariantFamily& family : variant_families()) add_variant(family, a);
+  return true;
+}
+
+bool register_variant_family(VariantFamily family) {
+  const std::vector<Algorithm> bases = algorithms();  // a copy: adding the variants moves the entries
+  for (const Algorithm& base : bases) add_variant(family, base);
+  variant_families().push_back(std::move(family));
+  return true;
+}
 
 std::optional<std::string> refusal(const Algorithm& a, const Polygon& p) {
   if (!a.accepts.holes && p.hole_count() > 0) {
@@ -32,7 +63,8 @@ std::string algorithms_json() {
            ", \"peer\": " + (is_peer(a) ? json_quote(a.peer) : "null") + ", \"holes\": " + json_bool(a.accepts.holes) +
            ", \"accepts\": {\"holes\": " + json_bool(a.accepts.holes) +
            ", \"convex_only\": " + json_bool(a.accepts.convex_only) + ", \"max_vertices\": " + max_vertices +
-           "}, \"size_ceiling\": " + std::to_string(a.size_ceiling) + "}";
+           "}, \"size_ceiling\": " + std::to_string(a.size_ceiling) +
+           ", \"variant_of\": " + (a.variant_of.empty() ? "null" : json_quote(a.variant_of)) + "}";
   }
   return out + "]\n";
 }

@@ -8,6 +8,12 @@
 // The command line, the benchmark harness and the tests iterate the registry, so a new algorithm is
 // listed, benchmarked and validated without edits elsewhere. Algorithm files are built as a CMake
 // OBJECT library so that the linker cannot drop their registrations.
+//
+// A file may also register a family of variants, one algorithm per base algorithm it takes (e.g.
+// `hertel-mehlhorn[ear-n2]` for every triangulation that adds no Steiner points): REGISTER_VARIANTS
+// with a predicate and a function that makes the variant of a base. Each variant is in the registry
+// like any algorithm, made when both its family and its base are registered (in either order, plug-ins
+// included), and names its base in `variant_of`.
 #pragma once
 
 #include "core/decomposition.h"
@@ -44,8 +50,21 @@ struct Algorithm {
   Accepts accepts{};                   // the input it takes
   std::size_t size_ceiling = 1000000;  // largest n that sweeps and property tests give it (its budget)
   bool times_itself = false;           // run reports its own timing (Decomposition::own_seconds)
+  std::string variant_of{};            // a variant's base algorithm; empty for an algorithm of its own file
   RunFn run{};
 };
+
+// A family of variants: `takes` says which bases it has a variant of, `make` makes the variant of one.
+struct VariantFamily {
+  std::string name;  // the family's name, e.g. "hertel-mehlhorn"; a variant is called name[base]
+  std::function<bool(const Algorithm& base)> takes;
+  std::function<Algorithm(const Algorithm& base)> make;
+};
+
+// The name of the variant of `family` over `base`.
+inline std::string variant_name(const std::string& family, const std::string& base) {
+  return family + "[" + base + "]";
+}
 
 inline bool is_peer(const Algorithm& a) { return !a.peer.empty(); }
 
@@ -59,10 +78,15 @@ std::string algorithms_json();
 inline const std::vector<Algorithm>& algorithms() { return NamedRegistry<Algorithm>::all(); }
 // The algorithm called `name`, or nullptr.
 inline const Algorithm* find_algorithm(const std::string& name) { return NamedRegistry<Algorithm>::find(name); }
-// Adds an algorithm; used by REGISTER_ALGORITHM at static-initialisation time.
-inline bool register_algorithm(Algorithm a) { return NamedRegistry<Algorithm>::add(std::move(a)); }
+// Adds an algorithm, and its variant in every family that takes it; used by REGISTER_ALGORITHM at
+// static-initialisation time and by the plug-ins.
+bool register_algorithm(Algorithm a);
+// Adds a family of variants, and its variant of every registered algorithm it takes.
+bool register_variant_family(VariantFamily family);
 
 }  // namespace pd
 
 #define REGISTER_ALGORITHM(...) \
   static const bool PD_CONCAT(pd_registered_, __COUNTER__) = ::pd::register_algorithm(__VA_ARGS__)
+#define REGISTER_VARIANTS(...) \
+  static const bool PD_CONCAT(pd_registered_, __COUNTER__) = ::pd::register_variant_family(__VA_ARGS__)

@@ -27,6 +27,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstdio>
@@ -178,10 +179,12 @@ std::string list_markdown() {
 }
 
 std::string list_text() {
+  int width = 0;  // of the name column: the longest name
+  for (const Algorithm& a : algorithms()) width = std::max(width, static_cast<int>(a.name.size()));
   std::string out;
-  char line[512];
+  char line[1024];
   for (const Algorithm& a : algorithms()) {
-    std::snprintf(line, sizeof line, "%-22s %-13s %-10s %-8s %-18s %-12s %s\n", a.name.c_str(), kind_name(a.kind),
+    std::snprintf(line, sizeof line, "%-*s %-13s %-10s %-8s %-18s %-12s %s\n", width, a.name.c_str(), kind_name(a.kind),
                   a.steiner ? "steiner" : "diagonals", a.optimal ? "optimal" : "-", ("O(" + a.time_bound + ")").c_str(),
                   a.pieces_bound.c_str(), a.source.c_str());
     out += line;

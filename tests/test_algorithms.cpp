@@ -46,13 +46,15 @@ std::pair<std::set<std::string>, std::size_t> names_in_algorithm_files() {
 }
 
 // Every REGISTER_ALGORITHM line in algorithms/ is in the registry, one algorithm per file named after
-// it: a registration lost to the linker fails here.
+// it: a registration lost to the linker fails here. The variants (REGISTER_VARIANTS) have no file of
+// their own: each names its base, and its family's name is an algorithm with a file.
 TEST(Registry, HoldsEveryAlgorithmFile) {
   std::set<std::string> names;
-  for (const Algorithm& a : algorithms()) names.insert(a.name);
+  for (const Algorithm& a : algorithms())
+    if (a.variant_of.empty()) names.insert(a.name);
   const auto [in_files, registrations] = names_in_algorithm_files();
   EXPECT_EQ(names, in_files);
-  EXPECT_EQ(registrations, algorithms().size());
+  EXPECT_EQ(registrations, names.size());
   for (const std::string& name : names) {
     std::string file = name;
     std::replace(file.begin(), file.end(), '-', '_');
@@ -60,8 +62,59 @@ TEST(Registry, HoldsEveryAlgorithmFile) {
   }
   EXPECT_EQ(static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(PD_SOURCE_DIR "/algorithms"),
                                                    std::filesystem::directory_iterator())),
-            algorithms().size());
+            names.size());
   EXPECT_THROW(register_algorithm(*find_algorithm("monotone")), std::logic_error);  // a second "monotone"
+}
+
+// hertel-mehlhorn[T] exists for exactly the registered triangulations T without Steiner points but
+// monotone (whose variant is hertel-mehlhorn), made from T: its input limits, ceiling and peer.
+TEST(Registry, HasAHertelMehlhornVariantOfEveryTriangulation) {
+  std::size_t variants = 0;
+  for (const Algorithm& base : algorithms()) {
+    const Algorithm* v = find_algorithm(variant_name("hertel-mehlhorn", base.name));
+    const bool wanted = base.kind == Kind::Triangulation && !base.steiner && base.name != "monotone";
+    ASSERT_EQ(v != nullptr, wanted) << base.name;
+    if (!v) continue;
+    ++variants;
+    EXPECT_EQ(v->variant_of, base.name);
+    EXPECT_EQ(v->kind, Kind::Convex);
+    EXPECT_FALSE(v->steiner);
+    EXPECT_EQ(v->accepts.holes, base.accepts.holes);
+    EXPECT_EQ(v->size_ceiling, base.size_ceiling);
+    EXPECT_EQ(v->peer, base.peer);
+    EXPECT_EQ(v->time_bound, base.time_bound);
+  }
+  EXPECT_GE(variants, 8u);
+  for (const Algorithm& a : algorithms()) {
+    if (!a.variant_of.empty()) {
+      EXPECT_EQ(a.name, variant_name("hertel-mehlhorn", a.variant_of));
+    }
+  }
+}
+
+// A family registered after its bases, and a base registered after its family, both get the variant.
+// (The registry is the process's: the two test entries stay in it, as a plug-in's would, and take only
+// convex polygons, which their fan triangulates.)
+TEST(Registry, MakesAVariantWhicheverComesFirst) {
+  const Algorithm late_base{.name = "zz-test-fan", .kind = Kind::Triangulation, .accepts = {.convex_only = true},
+                            .run = [](const Polygon& p, Counters&) {
+                              Decomposition d;
+                              for (std::size_t i = 2; i + 1 < p.size(); ++i) d.add_cut(0, i);
+                              return d;
+                            }};
+  register_algorithm(late_base);
+  ASSERT_NE(find_algorithm("hertel-mehlhorn[zz-test-fan]"), nullptr);
+  register_variant_family({.name = "zz-test-family",
+                           .takes = [](const Algorithm& base) { return base.name == "zz-test-fan"; },
+                           .make = [](const Algorithm& base) { return base; }});
+  const Algorithm* made = find_algorithm("zz-test-family[zz-test-fan]");
+  ASSERT_NE(made, nullptr);
+  EXPECT_EQ(made->variant_of, "zz-test-fan");
+  EXPECT_EQ(find_algorithm("zz-test-family[hertel-mehlhorn[zz-test-fan]]"), nullptr);  // no variant of a variant
+  const Polygon hexagon = Polygon::make({{0, 0}, {4, 0}, {6, 2}, {6, 3}, {3, 5}, {0, 3}});
+  Counters counters;
+  EXPECT_TRUE(find_algorithm("hertel-mehlhorn[zz-test-fan]")->run(hexagon, counters).cuts.empty());
+  EXPECT_EQ(counters["diagonals"], 3);
 }
 
 // What an algorithm takes is refused with one sentence naming the limit, before it runs.
@@ -224,7 +277,8 @@ std::vector<std::string> registered_names(bool only_our_optimal) {
 
 std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
   std::string s = info.param;
-  std::replace(s.begin(), s.end(), '-', '_');
+  for (char& c : s)
+    if (c == '-' || c == '[' || c == ']') c = '_';
   return s;
 }
 

@@ -58,24 +58,33 @@ TEST_F(Cli, ListJsonHasEveryAlgorithmWithTheContractKeys) {
   ASSERT_EQ(r.status, 0);
   const Json list = parse_json(r.out);
   // Besides the algorithms built in, the CLI lists the external ones of the project's peers/ (one
-  // manifest each), which are peers.
+  // manifest each), which are peers, and their variants (hertel-mehlhorn[earcut]), each naming its
+  // base, which is listed.
   std::size_t manifests = 0;
   if (fs::is_directory(PD_SOURCE_DIR "/peers"))
     for (const auto& entry : fs::directory_iterator(PD_SOURCE_DIR "/peers"))
       manifests += entry.path().extension() == ".json";
-  ASSERT_EQ(list.items.size(), algorithms().size() + manifests);
+  std::set<std::string> listed;
+  std::size_t variants_of_manifests = 0;
+  for (const Json& a : list.items) listed.insert(a.get("name")->text);
   for (const Json& a : list.items) {
     for (const char* key : {"name", "kind", "steiner", "optimal", "time_bound", "pieces_bound", "source", "peer",
-                            "holes", "accepts", "size_ceiling"})
-      EXPECT_NE(a.get(key), nullptr) << key;
+                            "holes", "accepts", "size_ceiling", "variant_of"})
+      ASSERT_NE(a.get(key), nullptr) << key;
+    const bool variant = a.get("variant_of")->type == Json::Type::String;
+    if (variant) {
+      EXPECT_EQ(listed.count(a.get("variant_of")->text), 1u) << a.get("name")->text;
+    }
     const Algorithm* registered = find_algorithm(a.get("name")->text);
     if (registered == nullptr) {
       EXPECT_EQ(a.get("peer")->type, Json::Type::String) << a.get("name")->text << " (from peers/) is a peer";
+      variants_of_manifests += variant;
       continue;
     }
     EXPECT_EQ(a.get("peer")->type == Json::Type::Null, !is_peer(*registered)) << registered->name;
     EXPECT_EQ(a.get("accepts")->get("convex_only")->boolean, registered->accepts.convex_only) << registered->name;
   }
+  EXPECT_EQ(list.items.size(), algorithms().size() + manifests + variants_of_manifests);
   EXPECT_EQ(cli("list").status, 0);
 }
 

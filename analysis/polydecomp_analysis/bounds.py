@@ -319,6 +319,71 @@ def _real_polygons_section(runs, registry, refused):
     ])
 
 
+HM = "hertel-mehlhorn"
+
+
+def is_hm_variant(name):
+    """Hertel-Mehlhorn's removal over some triangulation: hertel-mehlhorn, its variants
+    hertel-mehlhorn[T] and hertel-mehlhorn-greedy, and CGAL's approx_convex_partition_2."""
+    return name == HM or name.startswith(HM + "[") or name.startswith(HM + "-") or name == "cgal-" + HM
+
+
+def _mean_cell(values):
+    return "{:.3f} ({})".format(statistics.mean(values), len(values)) if values else "-"
+
+
+def hm_variant_tables(runs, registry):
+    """The Hertel-Mehlhorn variants' pieces, per family (corpora included): against the fewest of any
+    variant on the same polygon, and against the optimum where an optimal diagonal-only program of
+    polydecomp's own finished on it. Returns (families, rows against the best, rows against OPT); a
+    row is [variant, its cell per family, its cell over all], a cell "mean ratio (polygons)"."""
+    ok = [run for run in runs if run.status == "ok" and run.pieces is not None and run.algorithm in registry]
+    best, optimum = {}, {}
+    for run in ok:
+        algo = registry[run.algorithm]
+        if is_hm_variant(run.algorithm):
+            best[run.polygon] = min(best.get(run.polygon, run.pieces), run.pieces)
+        elif algo["kind"] == "convex" and algo["optimal"] and not algo["steiner"] and not is_peer(algo):
+            optimum[run.polygon] = min(optimum.get(run.polygon, run.pieces), run.pieces)
+    to_best = collections.defaultdict(lambda: collections.defaultdict(list))
+    to_opt = collections.defaultdict(lambda: collections.defaultdict(list))
+    for run in ok:
+        if not is_hm_variant(run.algorithm):
+            continue
+        to_best[run.algorithm][run.family].append(run.pieces / best[run.polygon])
+        if run.polygon in optimum:
+            to_opt[run.algorithm][run.family].append(run.pieces / optimum[run.polygon])
+    families = sorted({run.family for run in ok if is_hm_variant(run.algorithm)})
+
+    def rows(table):
+        return [[name] + [_mean_cell(table[name][f]) for f in families] +
+                [_mean_cell([v for f in families for v in table[name][f]])] for name in sorted(table)]
+    return families, rows(to_best), rows(to_opt)
+
+
+def _hm_variants_section(runs, registry):
+    families, to_best, to_opt = hm_variant_tables(runs, registry)
+    if not to_best:
+        return "No Hertel-Mehlhorn variant in these results."
+    header = ["variant"] + families + ["all"]
+    return "\n".join([
+        "Hertel-Mehlhorn's diagonal removal over each triangulation (`hertel-mehlhorn[T]`; `hertel-mehlhorn` is",
+        "the one over `monotone`, `hertel-mehlhorn-greedy` the same with the greedy removal order, and",
+        "`cgal-hertel-mehlhorn` CGAL's own). Each cell is the mean ratio of the variant's pieces to a",
+        "reference on the same polygon, with the number of polygons: a variant is compared only where it ran",
+        "(the slow triangulations stop at small n).",
+        "",
+        "Against the fewest pieces of any variant on the polygon:",
+        "",
+        _table(header, to_best),
+        "",
+        "Against the optimum, where an optimal diagonal-only program of polydecomp's own finished (no",
+        "polygons with holes):",
+        "",
+        _table(header, to_opt) if to_opt else "None.",
+    ])
+
+
 PEER = "cgal-cdt"  # the CGAL peer every triangulation is timed against, polygon by polygon
 PEER_SIZES = (100000, 1000000)  # the sizes of the comparison (issue 4: "at n = 10^5 and 10^6")
 
@@ -583,6 +648,10 @@ def render(context, registry, times, ops, pieces, runs, source, refused=()):
         "## Real polygons",
         "",
         _real_polygons_section(runs, registry, refused),
+        "",
+        "## Hertel-Mehlhorn over every triangulation",
+        "",
+        _hm_variants_section(runs, registry),
         "",
         "## Against {}".format(PEER),
         "",

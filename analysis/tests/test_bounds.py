@@ -237,3 +237,30 @@ class CurvesAgainstHTest(unittest.TestCase):
         both, _ = bounds.time_rows(along_n + along_h, registry)
         alone, _ = bounds.time_rows(along_n, registry)
         self.assertEqual(both[0].fit.points, alone[0].fit.points)
+
+
+class HertelMehlhornVariantsTest(unittest.TestCase):
+    """Each Hertel-Mehlhorn variant's pieces against the best variant and the optimum, per family."""
+
+    def test_ratios_per_family_and_over_all(self):
+        convex = {"kind": "convex", "steiner": False, "optimal": False, "peer": None}
+        registry = {"hertel-mehlhorn": convex, "hertel-mehlhorn[ear-n2]": convex,
+                    "ear-n2": dict(convex, kind="triangulation"), "keil": dict(convex, optimal=True),
+                    "cgal-optimal": dict(convex, optimal=True, peer="CGAL 5.5")}
+
+        def run(algorithm, family, seed, pieces, status="ok"):
+            return results.Run({"name": "{}/{}/n:100/r:10/seed:{}".format(algorithm, family, seed), "status": status,
+                                "pieces": pieces})
+        runs = [run("hertel-mehlhorn", "comb", 1, 8), run("hertel-mehlhorn[ear-n2]", "comb", 1, 6),
+                run("keil", "comb", 1, 6), run("cgal-optimal", "comb", 1, 3),  # a peer's optimum is no reference
+                run("hertel-mehlhorn", "comb", 2, 5), run("hertel-mehlhorn[ear-n2]", "comb", 2, 4, status="invalid"),
+                run("hertel-mehlhorn", "star", 1, 9), run("hertel-mehlhorn[ear-n2]", "star", 1, 12),
+                run("ear-n2", "star", 1, 98)]
+        families, to_best, to_opt = bounds.hm_variant_tables(runs, registry)
+        self.assertEqual(families, ["comb", "star"])
+        self.assertEqual(to_best, [["hertel-mehlhorn", "1.167 (2)", "1.000 (1)", "1.111 (3)"],
+                                   ["hertel-mehlhorn[ear-n2]", "1.000 (1)", "1.333 (1)", "1.167 (2)"]])
+        self.assertEqual(to_opt, [["hertel-mehlhorn", "1.333 (1)", "-", "1.333 (1)"],
+                                  ["hertel-mehlhorn[ear-n2]", "1.000 (1)", "-", "1.000 (1)"]])
+        self.assertTrue(bounds.is_hm_variant("cgal-hertel-mehlhorn"))
+        self.assertFalse(bounds.is_hm_variant("hertel"))

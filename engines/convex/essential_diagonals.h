@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 namespace pd {
@@ -132,6 +133,35 @@ inline std::vector<Cut> keep_essential(const Polygon& p, const std::vector<Cut>&
     else kept.push_back(diagonals[k]);
   }
   return kept;
+}
+
+// keep_essential as an algorithm's result: the diagonals left, with the triangulation's counters
+// (prefixed "triangulation_") and the removal's own.
+inline Decomposition removal_result(const Polygon& p, const std::vector<Cut>& diagonals, const Counters& triangulation,
+                                    Counters& counters) {
+  std::int64_t tests = 0;
+  Decomposition d;
+  d.cuts = keep_essential(p, diagonals, tests);
+  for (const auto& [name, value] : triangulation) counters["triangulation_" + name] = value;
+  counters["diagonals"] = static_cast<std::int64_t>(diagonals.size());
+  counters["diagonals_removed"] = static_cast<std::int64_t>(diagonals.size() - d.cuts.size());
+  counters["essential_tests"] = tests;
+  return d;
+}
+
+// The diagonals of a triangulation, whichever way it came: its cuts, or (a peer's) its triangles'
+// edges that are not polygon edges, each once, in the order the triangles list them. Throws
+// std::runtime_error for a triangulation with Steiner points, which no diagonal removal takes.
+inline std::vector<Cut> triangulation_diagonals(const Polygon& p, const Decomposition& d) {
+  if (!d.steiner.empty()) throw std::runtime_error("the triangulation added Steiner points");
+  if (!d.pieces) return d.cuts;
+  std::vector<Cut> diagonals;
+  for (const Piece& piece : *d.pieces)
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      const VertexId a = piece[i], b = piece[(i + 1) % piece.size()];
+      if (a < b && p.next(a) != b && p.next(b) != a) diagonals.push_back({a, b});
+    }
+  return diagonals;
 }
 
 }  // namespace essential
