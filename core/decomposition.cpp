@@ -115,13 +115,12 @@ struct Rotation {
   }
 };
 
-// Each vertex's half-edges sorted counter-clockwise. `edges` holds every edge as a pair of twins
-// (2k, 2k + 1), so a half-edge's twin is found through where its partner went: O(E) beyond the sorts
-// of the rows, without searching any row.
-template <class P>
-Rotation sorted_rotation(const std::vector<P>& pts, const std::vector<HalfEdge>& edges) {
+// Each vertex's half-edges sorted counter-clockwise, `order(v)` ordering the targets of v's half-edges.
+// `edges` holds every edge as a pair of twins (2k, 2k + 1), so a half-edge's twin is found through
+// where its partner went: O(E) beyond the sorts of the rows, without searching any row.
+template <class Order>
+Rotation sorted_rotation(std::size_t m, const std::vector<HalfEdge>& edges, Order order) {
   if (edges.size() >= (std::uint64_t{1} << 32)) malformed("2^32 half-edges or more");
-  const std::size_t m = pts.size();
   const auto count = static_cast<HalfEdgeId>(edges.size());
   Rotation rot;
   rot.start.assign(m + 1, 0);
@@ -135,8 +134,8 @@ Rotation sorted_rotation(const std::vector<P>& pts, const std::vector<HalfEdge>&
   for (std::size_t v = 0; v < m; ++v) {
     const auto first = id.begin() + rot.start[v];
     const auto last = id.begin() + rot.start[v + 1];
-    const AngularLess<P> angular{pts, pts[v]};
-    const auto less = [&](HalfEdgeId a, HalfEdgeId b) { return angular(edges[a].to, edges[b].to); };
+    const auto targets = order(static_cast<VertexId>(v));
+    const auto less = [&](HalfEdgeId a, HalfEdgeId b) { return targets(edges[a].to, edges[b].to); };
     std::sort(first, last, less);
     for (auto it = first; it + 1 < last; ++it)
       if (!less(*it, *(it + 1)))
@@ -154,11 +153,27 @@ Rotation sorted_rotation(const std::vector<P>& pts, const std::vector<HalfEdge>&
   return rot;
 }
 
+// Around each vertex, counter-clockwise by angle: exact, for any plane graph.
+template <class P>
+auto by_angle(const std::vector<P>& pts) {
+  return [&pts](VertexId v) { return AngularLess<P>{pts, pts[v]}; };
+}
+
+// Around vertex v of a polygon without holes cut by diagonals, counter-clockwise: the other ends in
+// boundary order v+1, v+2, ..., v-1, as diagonals that do not cross must be (Keil-Snoeyink (001),
+// Observation 1). No geometry: crossing or overlapping cuts make faces that are not convex or not
+// counter-clockwise, which the validator names.
+auto in_boundary_order(std::size_t n) {
+  return [n](VertexId v) {
+    return [n, v](VertexId a, VertexId b) { return (a + n - v) % n < (b + n - v) % n; };
+  };
+}
+
 // The faces of the plane graph, except those to the left of a ring's first edge walked backwards (the
 // outside, and the inside of each hole).
-template <class P>
-std::vector<Piece> bounded_faces(const std::vector<P>& pts, const std::vector<HalfEdge>& edges, const Cycles& rings) {
-  const Rotation rot = sorted_rotation(pts, edges);
+template <class Order>
+std::vector<Piece> bounded_faces(std::size_t m, const std::vector<HalfEdge>& edges, const Cycles& rings, Order order) {
+  const Rotation rot = sorted_rotation(m, edges, order);
   std::vector<char> used(edges.size(), 0);
   std::vector<Piece> faces;
   Piece face;  // walked here, then copied at its size: one allocation a face
@@ -214,11 +229,12 @@ std::vector<Piece> pieces_of(const Polygon& p, const Decomposition& d) {
   const std::size_t m = p.size() + d.steiner.size();
   if (d.steiner.empty()) {
     const Cycles rings = boundary_cycles(p, d, nullptr);
-    return bounded_faces(p.vertices(), half_edges(d, rings, m), rings);
+    if (p.hole_count() == 0) return bounded_faces(m, half_edges(d, rings, m), rings, in_boundary_order(m));
+    return bounded_faces(m, half_edges(d, rings, m), rings, by_angle(p.vertices()));
   }
   const std::vector<QPoint> pts = exact_points(p, d);
   const Cycles rings = boundary_cycles(p, d, &pts);
-  return bounded_faces(pts, half_edges(d, rings, m), rings);
+  return bounded_faces(m, half_edges(d, rings, m), rings, by_angle(pts));
 }
 
 }  // namespace pd

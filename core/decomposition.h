@@ -61,8 +61,12 @@ std::vector<QPoint> exact_points(const Polygon& p, const Decomposition& d);
 // The pieces (bounded faces) of the polygon cut by d.cuts, each a counter-clockwise cycle listing every
 // decomposition vertex on its boundary. Returns d.pieces as they are when a peer set them. Untimed: the
 // one shared routine for output, SVG and validation. Throws std::invalid_argument with a reason when
-// the cuts do not form a plane graph inside the polygon (ids out of range, a cut from a vertex to
-// itself, a repeated cut, a Steiner point on no edge it names).
+// the cuts do not form a graph it can take (ids out of range, a cut from a vertex to itself, a
+// repeated cut, a Steiner point on no edge it names, two edges overlapping at a vertex). Without
+// Steiner points and holes the faces are found from the vertex order alone (diagonals inside a polygon
+// that do not cross leave each vertex in boundary order), so cuts that cross or leave the polygon give
+// faces that are clockwise or not convex, which the validator names; otherwise the edges at each
+// vertex are sorted by angle, exactly.
 std::vector<Piece> pieces_of(const Polygon& p, const Decomposition& d);
 
 }  // namespace pd

@@ -1,6 +1,5 @@
 #include "core/validate.h"
 
-#include "core/sort_rows.h"
 
 #include <algorithm>
 #include <cmath>
@@ -173,30 +172,80 @@ std::string edge_text(VertexId a, VertexId b) { return std::to_string(a) + "-" +
 
 constexpr VertexId kNoSuccessor = ~VertexId(0);
 
+// One use of an edge by a piece, in the row of the edge's lower endpoint: the other endpoint, and +1
+// when the piece walks it upwards (lower to higher id), -1 when downwards.
+struct EdgeUse {
+  VertexId other;
+  std::int32_t sign;
+  bool operator<(const EdgeUse& u) const { return other < u.other; }
+};
+
 // The pieces' directed edges that no piece matches in the opposite direction, as a successor per
 // vertex (kNoSuccessor when none), with their number. Returns a fault when an edge is used twice in
-// one direction (overlap) or a vertex starts two of them. The edges are sorted by their endpoints, so
-// an edge and its reverse are neighbours: a counting sort by the lower endpoint, O(E) for E piece
-// edges but for the few edges at each vertex.
-std::string unmatched_edges(const std::vector<Piece>& pieces, std::vector<VertexId>& successor,
-                            std::size_t& count) {
-  std::vector<std::pair<std::uint64_t, int>> uses;  // key (lo, hi), +1 for lo->hi, -1 for hi->lo
-  std::size_t edges = 0;
-  for (const Piece& piece : pieces) edges += piece.size();
-  uses.reserve(edges);
-  for (const Piece& piece : pieces)
-    for (std::size_t i = 0; i < piece.size(); ++i) {
-      const VertexId a = piece[i], b = piece[(i + 1) % piece.size()];
-      uses.push_back({(std::uint64_t(std::min(a, b)) << 32) | std::max(a, b), a < b ? 1 : -1});
+// one direction (overlap) or a vertex starts two of them. The uses are rows by lower endpoint (a
+// counting sort, then each row's few uses sorted), so an edge and its reverse meet in one row: O(E)
+// for E piece edges but for the few edges at each vertex. The polygon's own edges walked forwards,
+// a third of a triangulation's piece edges, are counted per edge instead of joining the rows.
+class EdgeMatch {
+ public:
+  EdgeMatch(const Polygon& p, std::size_t m) : p_(p), n_(p.size()), forward_(n_, 0), start_(m + 2, 0) {}
+
+  std::string unmatched(const std::vector<Piece>& pieces, std::vector<VertexId>& successor, std::size_t& count) {
+    fill_rows(pieces);
+    count = 0;
+    for (std::size_t lo = 0; lo + 2 < start_.size(); ++lo) {
+      const auto first = uses_.begin() + static_cast<std::ptrdiff_t>(start_[lo]);
+      const auto last = uses_.begin() + static_cast<std::ptrdiff_t>(start_[lo + 1]);
+      if (last - first > 1) std::sort(first, last);
+      for (auto it = first; it != last;) {
+        const VertexId hi = it->other;
+        int net = 0;
+        for (; it != last && it->other == hi; ++it) net += it->sign;
+        net += take_forward(static_cast<VertexId>(lo), hi) - take_forward(hi, static_cast<VertexId>(lo));
+        if (std::string f = record(static_cast<VertexId>(lo), hi, net, successor, count); !f.empty()) return f;
+      }
     }
-  sort_in_rows(uses, successor.size(), [](const std::pair<std::uint64_t, int>& use) { return use.first >> 32; });
-  count = 0;
-  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
-    int net = 0;
-    for (j = i; j < uses.size() && uses[j].first == uses[i].first; ++j) net += uses[j].second;
-    if (net == 0) continue;
-    const VertexId lo = static_cast<VertexId>(uses[i].first >> 32);
-    const VertexId hi = static_cast<VertexId>(uses[i].first & 0xffffffffu);
+    for (std::size_t i = 0; i < n_; ++i) {
+      const auto a = static_cast<VertexId>(i), b = static_cast<VertexId>(p_.next(i));
+      const int net = take_forward(a, b);
+      if (std::string f = a < b ? record(a, b, net, successor, count) : record(b, a, -net, successor, count); !f.empty())
+        return f;
+    }
+    return {};
+  }
+
+ private:
+  bool is_polygon_edge(VertexId a, VertexId b) const { return a < n_ && b < n_ && p_.next(a) == b; }
+
+  // Rows by lower endpoint: a pass counting each row's uses (and the polygon's edges walked forwards),
+  // then a pass placing them.
+  void fill_rows(const std::vector<Piece>& pieces) {
+    auto each_edge = [&](auto visit) {
+      for (const Piece& piece : pieces)
+        for (std::size_t i = 0; i < piece.size(); ++i) visit(piece[i], piece[(i + 1) % piece.size()]);
+    };
+    each_edge([&](VertexId a, VertexId b) {
+      if (!is_polygon_edge(a, b)) ++start_[std::min(a, b) + 2];
+      else if (forward_[a] < 255) ++forward_[a];
+    });
+    std::partial_sum(start_.begin(), start_.end(), start_.begin());
+    uses_.resize(start_.back());
+    each_edge([&](VertexId a, VertexId b) {  // row r then lies in [start[r], start[r+1])
+      if (!is_polygon_edge(a, b)) uses_[start_[std::min(a, b) + 1]++] = EdgeUse{std::max(a, b), a < b ? 1 : -1};
+    });
+  }
+
+  // The uses of polygon edge a -> b walked forwards, once: they leave the count when taken.
+  int take_forward(VertexId a, VertexId b) {
+    if (!is_polygon_edge(a, b)) return 0;
+    const int uses = forward_[a];
+    forward_[a] = 0;
+    return uses;
+  }
+
+  // Edge lo-hi used `net` times more upwards than downwards: matched (0), or an unshared edge.
+  static std::string record(VertexId lo, VertexId hi, int net, std::vector<VertexId>& successor, std::size_t& count) {
+    if (net == 0) return {};
     if (net > 1 || net < -1)
       return "edge " + edge_text(lo, hi) + " is covered " + std::to_string(net > 0 ? net : -net) +
              " times from one side (overlap)";
@@ -204,9 +253,15 @@ std::string unmatched_edges(const std::vector<Piece>& pieces, std::vector<Vertex
     if (successor[from] != kNoSuccessor) return "vertex " + std::to_string(from) + " starts two unshared edges (gap or overlap)";
     successor[from] = to;
     ++count;
+    return {};
   }
-  return {};
-}
+
+  const Polygon& p_;
+  std::size_t n_;
+  std::vector<std::uint8_t> forward_;  // uses of polygon edge i -> next(i), at most 255 counted
+  std::vector<std::size_t> start_;
+  std::vector<EdgeUse> uses_;
+};
 
 // The tiling test: the unshared edges of the pieces must be exactly the polygon's boundary, each edge
 // (i, next(i)) walked forwards, possibly through Steiner points strictly inside it, in order.
@@ -214,7 +269,7 @@ template <class P>
 std::string chain_fault(const Polygon& p, const std::vector<P>& pts, const std::vector<Piece>& pieces) {
   std::vector<VertexId> successor(pts.size(), kNoSuccessor);
   std::size_t unshared = 0;
-  if (std::string f = unmatched_edges(pieces, successor, unshared); !f.empty()) return f;
+  if (std::string f = EdgeMatch(p, pts.size()).unmatched(pieces, successor, unshared); !f.empty()) return f;
   const std::size_t n = p.size();
   std::size_t walked = 0;
   for (std::size_t i = 0; i < n; ++i) {

@@ -70,7 +70,7 @@ TEST(Validate, CatchesACutThatLeavesThePolygon) {
   d.add_cut(0, 4);
   const Validation v = validate(p, d, Kind::Convex, false);
   EXPECT_FALSE(v.ok);
-  EXPECT_EQ(v.reason, "piece 1 turns right at vertex 3");  // the face outside, in the notch
+  EXPECT_EQ(v.reason, "piece 3 turns right at vertex 3");  // the face outside, in the notch
   // As pieces: one convex pentagon spanning the notch, its edge 2-4 outside the polygon.
   EXPECT_EQ(check(p, {{0, 1, 2, 4, 5}}).reason, "boundary edge 2-3 is not covered exactly once from inside");
 }
