@@ -13,8 +13,9 @@
 // other end where the triangulation has one. No bound better than Hertel-Mehlhorn's is claimed.
 //
 // Time O(n) after the triangulation (two orientation tests per diagonal end, the counting sort, the
-// O(1) removal tests of engines/convex/essential_diagonals.h), O(n log n) with it; space O(n). Pre: a
-// polygon, with h >= 0 holes; collinear vertices allowed. Output: diagonals only, every one
+// O(1) removal tests of engines/convex/essential_diagonals.h; O(n log n) with holes, whose removal
+// sorts each vertex's diagonals by angle), O(n log n) with it; space O(n). Pre: a polygon, with h >= 0
+// holes; collinear vertices allowed. Output: diagonals only, every one
 // essential, at most 2r + 1 - h pieces, at most 4 OPT without holes.
 #include "core/registry.h"
 #include "engines/convex/essential_diagonals.h"

@@ -28,6 +28,15 @@ bool register_algorithm(Algorithm a) {
   return true;
 }
 
+std::optional<std::string> taken_name(const Algorithm& a) {
+  if (find_algorithm(a.name)) return a.name;
+  for (const VariantFamily& family : variant_families()) {
+    const std::string name = variant_name(family.name, a.name);
+    if (a.variant_of.empty() && family.takes(a) && find_algorithm(name)) return name;
+  }
+  return std::nullopt;
+}
+
 bool register_variant_family(VariantFamily family) {
   const std::vector<Algorithm> bases = algorithms();  // a copy: adding the variants moves the entries
   for (const Algorithm& base : bases) add_variant(family, base);

@@ -83,6 +83,9 @@ inline const Algorithm* find_algorithm(const std::string& name) { return NamedRe
 bool register_algorithm(Algorithm a);
 // Adds a family of variants, and its variant of every registered algorithm it takes.
 bool register_variant_family(VariantFamily family);
+// The first name that registering `a` would add (its own, then its variants') that is registered
+// already, or nothing: register_algorithm throws std::logic_error for such a name, after adding `a`.
+std::optional<std::string> taken_name(const Algorithm& a);
 
 }  // namespace pd
 

@@ -39,8 +39,11 @@ bool Budget::cheaper(const Algorithm& a, const Point& p, std::size_t n, std::siz
 }
 
 double Budget::seconds_for(const Algorithm& a) const {
-  const auto own = budget_seconds_for_.find(a.name);
-  return own == budget_seconds_for_.end() ? budget_seconds_ : own->second;
+  for (const std::string& name : {a.name, a.variant_of}) {  // a variant's curve needs its base's sizes
+    const auto own = budget_seconds_for_.find(name);
+    if (own != budget_seconds_for_.end()) return own->second;
+  }
+  return budget_seconds_;
 }
 
 std::optional<std::string> Budget::skip_reason(const Algorithm& a, const std::string& family, std::size_t n,

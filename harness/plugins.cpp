@@ -441,7 +441,8 @@ void register_plugins(const std::vector<std::string>& folders) {
     std::sort(manifests.begin(), manifests.end());
     for (const fs::path& path : manifests) {
       Algorithm a = algorithm_of(path);
-      if (find_algorithm(a.name)) throw PluginError(path.string() + ": an algorithm named " + a.name + " exists already");
+      if (const auto taken = taken_name(a))
+        throw PluginError(path.string() + ": an algorithm named " + *taken + " exists already");
       register_algorithm(std::move(a));
     }
   }

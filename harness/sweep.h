@@ -51,7 +51,8 @@ struct Sweep {
   double min_time = 0;         // seconds Google Benchmark repeats each key for, at least
   double budget_seconds = 0;   // a key predicted to take longer than this (one call) is skipped
   // Budgets of single algorithms in place of budget_seconds ("budget_seconds_for": {"name": seconds}),
-  // for the few whose curves need sizes past the common budget.
+  // for the few whose curves need sizes past the common budget; a variant without one of its own takes
+  // its base's (hertel-mehlhorn[diagonal-n4] diagonal-n4's).
   std::map<std::string, double> budget_seconds_for;
   double timeout_seconds = 0;  // a key still running after this long is stopped and recorded skipped
 

@@ -3,6 +3,8 @@
 // analysis/tests/test_bound_expr.py, so that the harness's budget and the analysis read claims alike.
 #include "core/bound_expr.h"
 #include "core/json.h"
+#include "core/registry.h"
+#include "harness/budget.h"
 
 #include <gtest/gtest.h>
 
@@ -45,6 +47,19 @@ TEST(BoundExpr, SharedVectorsWithoutClaimParseToNothing) {
   ASSERT_NE(texts, nullptr);
   ASSERT_FALSE(texts->items.empty());
   for (const Json& text : texts->items) EXPECT_FALSE(BoundExpr::parse(text.text)) << "'" << text.text << "'";
+}
+
+// The sweep's budget predicts a key's time from the claim; an algorithm's own budget replaces the
+// common one, and a variant without its own takes its base's.
+TEST(Budget, AVariantTakesItsBasesBudget) {
+  const Algorithm base{.name = "base", .time_bound = "n"};
+  const Algorithm variant{.name = "family[base]", .time_bound = "n", .variant_of = "base"};
+  const Algorithm other{.name = "other", .time_bound = "n"};
+  Budget budget(1.0, {{"base", 100.0}});
+  for (const Algorithm* a : {&base, &variant, &other}) budget.record_time(*a, "random", 1000, 0, 2.0);
+  EXPECT_FALSE(budget.skip_reason(base, "random", 2000, 0));
+  EXPECT_FALSE(budget.skip_reason(variant, "random", 2000, 0));
+  EXPECT_EQ(budget.skip_reason(other, "random", 2000, 0).value_or("").rfind("skipped (budget): predicted", 0), 0u);
 }
 
 }  // namespace
