@@ -603,6 +603,12 @@ def gallery(polydecomp, registry, out_dir, spec):
     return ["gallery"]
 
 
+def _panel_name(name):
+    """A panel's title line(s) for an algorithm: a variant's base on a line of its own, since
+    "hertel-mehlhorn[diagonal-n3]" is wider than a sixth of the full width at SMALL_FONT."""
+    return name.replace("[", "\n[", 1)
+
+
 def _draw_decomposition(ax, name, d):
     ax.set_aspect("equal")
     ax.set_xticks([])
@@ -610,7 +616,7 @@ def _draw_decomposition(ax, name, d):
     for spine in ax.spines.values():
         spine.set_visible(False)
     if "error" in d:
-        ax.set_title(name, fontsize=SMALL_FONT)
+        ax.set_title(_panel_name(name), fontsize=SMALL_FONT)
         ax.text(0.5, 0.5, d["error"][:80], ha="center", va="center", wrap=True, fontsize=SMALL_FONT,
                 transform=ax.transAxes)
         return
@@ -626,8 +632,7 @@ def _draw_decomposition(ax, name, d):
     outline = points[:n] + points[:1]
     ax.plot([p[0] for p in outline], [p[1] for p in outline], "k-", linewidth=0.6)
     verdict = "" if d.get("valid", True) else " INVALID"
-    # two lines: the longest names fill a sixth of the full width at SMALL_FONT
-    ax.set_title("{}\n{} pieces{}".format(name, d["piece_count"], verdict), fontsize=SMALL_FONT,
+    ax.set_title("{}\n{} pieces{}".format(_panel_name(name), d["piece_count"], verdict), fontsize=SMALL_FONT,
                  color="red" if verdict else "black")
 
 
