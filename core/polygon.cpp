@@ -88,7 +88,17 @@ std::string ring_name(std::size_t k, std::size_t rings) {
   return k == 0 ? "the outer ring" : "hole " + std::to_string(k);
 }
 
-CleanRing clean_ring(Ring ring, std::size_t k, std::size_t rings) {
+// The ring's name in messages about its own vertices: the names of its vertices in its input.
+NameOf input_names(const CleanRing& c) {
+  return [&c](std::size_t i) { return std::to_string(c.file[i]); };
+}
+
+std::string not_simple(const std::string& why, std::size_t k, std::size_t rings) {
+  return rings == 1 ? "not simple: " + why : ring_name(k, rings) + " is not simple: " + why;
+}
+
+// Every check of one input ring but its simplicity, which `check_simple` adds.
+CleanRing clean_ring(Ring ring, std::size_t k, std::size_t rings, bool check_simple) {
   const std::string of = rings == 1 ? "" : " of " + ring_name(k, rings);
   for (std::size_t i = 0; i < ring.size(); ++i)
     if (!std::isfinite(ring[i].x()) || !std::isfinite(ring[i].y()))
@@ -116,20 +126,36 @@ CleanRing clean_ring(Ring ring, std::size_t k, std::size_t rings) {
     throw PolygonError(rings == 1 ? count + after + "; a polygon needs at least 3"
                                   : ring_name(k, rings) + " has " + count + after + "; a ring needs at least 3");
   }
-  const NameOf name = [&](std::size_t i) { return std::to_string(c.file[i]); };
-  if (std::string why = simplicity_fault(c.kept, name); !why.empty())
-    throw PolygonError(rings == 1 ? "not simple: " + why : ring_name(k, rings) + " is not simple: " + why);
+  if (check_simple)
+    if (std::string why = simplicity_fault(c.kept, input_names(c)); !why.empty()) throw PolygonError(not_simple(why, k, rings));
   return c;
 }
 
-// Turns ring v round when its orientation is not the wanted one, keeping its first vertex first.
-bool orient_ring(Ring& v, bool counter_clockwise) {
+// Whether ring v must be turned round (keeping its first vertex first) to have the wanted orientation.
+bool needs_turning(const Ring& v, bool counter_clockwise) {
   // The lowest-leftmost vertex of a simple ring is strictly convex, so its turn gives the orientation.
   const std::size_t n = v.size(), m = lowest_vertex(v);
   const bool is_ccw = orient(v[(m + n - 1) % n], v[m], v[(m + 1) % n]) > 0;
-  if (is_ccw == counter_clockwise) return false;
-  std::reverse(v.begin() + 1, v.end());
-  return true;
+  return is_ccw != counter_clockwise;
+}
+
+// The rings of a polygon with holes, each cleaned but not yet checked for simplicity: one sweep checks
+// the rings and their layout together; only when it fails do the rings' own checks and then the layout
+// check run apart, in that order, to name the first fault as each would (ring by ring, then the
+// layout).
+// The first of the rings cleaned so far (of `rings` in all) that is not simple, as its error.
+void throw_first_ring_fault(const std::vector<CleanRing>& clean, std::size_t rings) {
+  for (std::size_t k = 0; k < clean.size(); ++k)
+    if (std::string why = simplicity_fault(clean[k].kept, input_names(clean[k])); !why.empty())
+      throw PolygonError(not_simple(why, k, rings));
+}
+
+void check_rings_and_layout(const Polygon& p, const std::vector<CleanRing>& clean) {
+  bool folds = false;
+  for (const CleanRing& c : clean) folds = folds || !fold_back_fault(c.kept, input_names(c)).empty();
+  if (!folds && rings_and_layout_pass(p)) return;
+  throw_first_ring_fault(clean, clean.size());
+  if (std::string fault = layout_fault({&p}); !fault.empty()) throw PolygonError(fault);
 }
 
 }  // namespace
@@ -206,16 +232,22 @@ Polygon Polygon::make_with_holes(Rings rings) {
   std::vector<CleanRing> clean;
   clean.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
-    clean.push_back(clean_ring(std::move(rings[k]), k, count));
+    try {
+      clean.push_back(clean_ring(std::move(rings[k]), k, count, count == 1));
+    } catch (const PolygonError&) {
+      throw_first_ring_fault(clean, count);  // an earlier ring's own fault comes first
+      throw;
+    }
     any_merged = any_merged || !clean.back().merged.empty();
   }
   for (std::size_t k = 0; k < count; ++k) {
-    CleanRing& c = clean[k];
-    p.ring_reversed_.push_back(orient_ring(c.kept, k == 0));
+    const CleanRing& c = clean[k];
+    p.ring_reversed_.push_back(needs_turning(c.kept, k == 0));
     if (any_merged)
       for (const std::uint32_t f : c.file) p.file_of_.push_back(static_cast<std::uint32_t>(file_offset + f));
     for (const auto& [index, repeats] : c.merged) p.merged_.push_back({file_offset + index, file_offset + repeats});
     p.v_.insert(p.v_.end(), c.kept.begin(), c.kept.end());
+    if (p.ring_reversed_.back()) std::reverse(p.v_.end() - static_cast<std::ptrdiff_t>(c.kept.size()) + 1, p.v_.end());
     p.ring_start_.push_back(p.v_.size());
     file_offset += c.input_count;
   }
@@ -224,7 +256,7 @@ Polygon Polygon::make_with_holes(Rings rings) {
     for (std::size_t k = 0; k < count; ++k)
       std::fill(p.ring_of_.begin() + p.ring_start_[k], p.ring_of_.begin() + p.ring_start_[k + 1],
                 static_cast<std::uint32_t>(k));
-    if (std::string fault = layout_fault({&p}); !fault.empty()) throw PolygonError(fault);
+    check_rings_and_layout(p, clean);
   }
   return p;
 }

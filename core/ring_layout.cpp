@@ -1,8 +1,9 @@
 // The layout sweep of core/ring_layout.h, the sweep of core/sweep.h over the edges of every ring.
-// Edges of one ring are not tested: each ring is simple. The nesting of the rings is read at each
-// ring's leftmost vertex from the active edge just below it: the polygon's interior lies to the left
-// of every edge, so the region just above that edge is inside a part exactly when the edge runs
-// rightwards.
+// Edges of one ring are not tested when each ring is known to be simple; otherwise (the one sweep of
+// rings_and_layout_pass) all but a ring's adjacent edges are, which meet at their common vertex only.
+// The nesting of the rings is read at each ring's leftmost vertex from the active edge just below it:
+// the polygon's interior lies to the left of every edge, so the region just above that edge is inside
+// a part exactly when the edge runs rightwards.
 #include "core/ring_layout.h"
 #include "core/sweep.h"
 
@@ -45,8 +46,8 @@ std::size_t vertex_count(const std::vector<const Polygon*>& parts) {
 
 class LayoutSweep {
  public:
-  explicit LayoutSweep(const std::vector<const Polygon*>& parts)
-      : parts_(parts), active_(vertex_count(parts), Below{&edges_}, Test{this}) {
+  LayoutSweep(const std::vector<const Polygon*>& parts, bool rings_too)
+      : parts_(parts), rings_too_(rings_too), active_(vertex_count(parts), Below{&edges_}, Test{this}) {
     for (std::uint32_t q = 0; q < parts.size(); ++q) {
       offset_.push_back(static_cast<std::uint32_t>(edges_.size()));
       const Polygon& p = *parts[q];
@@ -103,8 +104,12 @@ class LayoutSweep {
 
   void test(std::uint32_t a, std::uint32_t b) const {
     const Edge &e = edges_[a], &f = edges_[b];
-    if (e.part == f.part && e.ring == f.ring) return;
+    if (e.part == f.part && e.ring == f.ring && (!rings_too_ || adjacent(e, f))) return;
     if (closed_segments_meet(e.lo, e.hi, f.lo, f.hi)) throw Meet{a, b};
+  }
+  bool adjacent(const Edge& e, const Edge& f) const {
+    const Polygon& p = *parts_[e.part];
+    return p.next(e.from) == f.from || p.next(f.from) == e.from;
   }
 
   // At a ring's leftmost vertex: the edge just below tells which region the ring starts in.
@@ -164,6 +169,7 @@ class LayoutSweep {
   }
 
   const std::vector<const Polygon*>& parts_;
+  bool rings_too_;  // test the edges of one ring against one another
   std::vector<Edge> edges_;  // edge offset_[q] + i runs from vertex i of part q to its next
   std::vector<std::uint32_t> offset_;
   std::vector<std::uint32_t> leftmost_;  // each ring's leftmost (lowest-leftmost) vertex, sorted
@@ -178,6 +184,8 @@ class LayoutSweep {
 
 }  // namespace
 
-std::string layout_fault(const std::vector<const Polygon*>& parts) { return LayoutSweep(parts).fault(); }
+std::string layout_fault(const std::vector<const Polygon*>& parts) { return LayoutSweep(parts, false).fault(); }
+
+bool rings_and_layout_pass(const Polygon& p) { return LayoutSweep({&p}, true).fault().empty(); }
 
 }  // namespace pd

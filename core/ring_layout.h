@@ -15,4 +15,9 @@ namespace pd {
 // every edge: O(n log n) for n vertices in all, with exact predicates.
 std::string layout_fault(const std::vector<const Polygon*>& parts);
 
+// Whether the rings of `p` are simple (no fold-backs, checked by the caller, aside) and lie as they
+// should, in one sweep: layout_fault's sweep testing the edges of one ring against one another too.
+// Says only yes or no (its faults are not named as the separate checks name them); O(n log n).
+bool rings_and_layout_pass(const Polygon& p);
+
 }  // namespace pd
