@@ -1,6 +1,5 @@
 #include "core/validate.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
