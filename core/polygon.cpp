@@ -88,7 +88,7 @@ std::string ring_name(std::size_t k, std::size_t rings) {
   return k == 0 ? "the outer ring" : "hole " + std::to_string(k);
 }
 
-// The ring's name in messages about its own vertices: the names of its vertices in its input.
+// Names a cleaned ring's kept vertex by its index in the ring's input, as messages about the ring do.
 NameOf input_names(const CleanRing& c) {
   return [&c](std::size_t i) { return std::to_string(c.file[i]); };
 }
@@ -126,8 +126,9 @@ CleanRing clean_ring(Ring ring, std::size_t k, std::size_t rings, bool check_sim
     throw PolygonError(rings == 1 ? count + after + "; a polygon needs at least 3"
                                   : ring_name(k, rings) + " has " + count + after + "; a ring needs at least 3");
   }
-  if (check_simple)
-    if (std::string why = simplicity_fault(c.kept, input_names(c)); !why.empty()) throw PolygonError(not_simple(why, k, rings));
+  if (!check_simple) return c;
+  if (std::string why = simplicity_fault(c.kept, input_names(c)); !why.empty())
+    throw PolygonError(not_simple(why, k, rings));
   return c;
 }
 
@@ -139,10 +140,6 @@ bool needs_turning(const Ring& v, bool counter_clockwise) {
   return is_ccw != counter_clockwise;
 }
 
-// The rings of a polygon with holes, each cleaned but not yet checked for simplicity: one sweep checks
-// the rings and their layout together; only when it fails do the rings' own checks and then the layout
-// check run apart, in that order, to name the first fault as each would (ring by ring, then the
-// layout).
 // The first of the rings cleaned so far (of `rings` in all) that is not simple, as its error.
 void throw_first_ring_fault(const std::vector<CleanRing>& clean, std::size_t rings) {
   for (std::size_t k = 0; k < clean.size(); ++k)
@@ -150,6 +147,10 @@ void throw_first_ring_fault(const std::vector<CleanRing>& clean, std::size_t rin
       throw PolygonError(not_simple(why, k, rings));
 }
 
+// The rings of a polygon with holes, each cleaned but not yet checked for simplicity: one sweep checks
+// the rings and their layout together; only when it fails do the rings' own checks and then the layout
+// check run apart, in that order, to name the first fault as each would (ring by ring, then the
+// layout).
 void check_rings_and_layout(const Polygon& p, const std::vector<CleanRing>& clean) {
   bool folds = false;
   for (const CleanRing& c : clean) folds = folds || !fold_back_fault(c.kept, input_names(c)).empty();

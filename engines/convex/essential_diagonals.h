@@ -1,11 +1,11 @@
 // Hertel and Mehlhorn's removal of inessential diagonals, shared by `hertel-mehlhorn` (and its
 // variants), `hertel-mehlhorn-greedy` and `greene-sweep`: given a convex decomposition of a polygon by
 // diagonals (a triangulation, say), each diagonal in turn is removed unless that would make a reflex
-// angle at one of its ends (Keil-Snoeyink (001), Sec. 2). Removing a diagonal only widens angles, so a diagonal kept stays essential, and at
-// the end every diagonal is essential: a reflex vertex is essential for at most two of them, so at
-// most 2r are left, at most 2r + 1 - h pieces for h holes, at most 4 OPT (OPT >= ceil(r/2) + 1 without
-// holes). With holes the pieces stay simple: a face with convex angles only is convex, so no removal
-// can leave one wrapped round a hole.
+// angle at one of its ends (Keil-Snoeyink (001), Sec. 2). Removing a diagonal only widens angles, so a
+// diagonal kept stays essential, and at the end every diagonal is essential: a reflex vertex is
+// essential for at most two of them, so at most 2r are left, at most 2r + 1 - h pieces for h holes, at
+// most 4 OPT (OPT >= ceil(r/2) + 1 without holes). With holes the pieces stay simple: a face with
+// convex angles only is convex, so no removal can leave one wrapped round a hole.
 //
 // O(n + k) for k diagonals: every vertex's edges in counter-clockwise order as a doubly linked list,
 // so that the angle a removal would make at a vertex is read from the diagonal's two neighbours and a
